@@ -1,0 +1,25 @@
+# Project-wide compile settings, applied per target with snow_set_options().
+# Determinism (DESIGN.md): never -ffast-math; -ffp-contract=off so no FMA fusion
+# changes results between scalar/SIMD or Debug/Release builds.
+function(snow_set_options target)
+    target_compile_options(${target} PRIVATE
+        -Wall -Wextra -Wpedantic -Werror
+        -ffp-contract=off -fno-trapping-math)
+    if(SNOW_NATIVE)
+        target_compile_options(${target} PRIVATE -march=native)
+    endif()
+    if(SNOW_SANITIZE)
+        target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                 -fno-sanitize-recover=all)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()
+
+# Generates ${out} (a .cpp) defining snow::${symbol}() returning ${input}'s bytes.
+function(snow_embed_file input out symbol)
+    add_custom_command(OUTPUT ${out}
+        COMMAND ${CMAKE_COMMAND} -DINPUT=${input} -DOUTPUT=${out} -DSYMBOL=${symbol}
+                -P ${PROJECT_SOURCE_DIR}/cmake/EmbedFile.cmake
+        DEPENDS ${input} ${PROJECT_SOURCE_DIR}/cmake/EmbedFile.cmake
+        COMMENT "Embedding ${input}")
+endfunction()

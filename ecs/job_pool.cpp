@@ -1,0 +1,90 @@
+#include "ecs/job_pool.hpp"
+
+#include <algorithm>
+
+namespace snow {
+
+JobPool::JobPool(unsigned threads) {
+    const unsigned extra = threads > 1 ? threads - 1 : 0;
+    workers_.reserve(extra);
+    for (unsigned i = 0; i < extra; ++i) {
+        workers_.emplace_back([this] { worker_loop(); });
+    }
+}
+
+JobPool::~JobPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& t : workers_) {
+        t.join();
+    }
+}
+
+void JobPool::drain() {
+    std::size_t done_here = 0;
+    for (;;) {
+        const std::size_t c = next_.fetch_add(1, std::memory_order_acq_rel);
+        if (c >= chunks_) {
+            break;
+        }
+        const std::size_t begin = c * grain_;
+        const std::size_t end = std::min(n_, begin + grain_);
+        (*job_)(c, begin, end);
+        ++done_here;
+    }
+    if (done_here > 0) {
+        std::lock_guard lock(mutex_);
+        finished_ += done_here;
+        if (finished_ == chunks_) {
+            done_.notify_all();
+        }
+    }
+}
+
+void JobPool::worker_loop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stop_ || epoch_ != seen; });
+            if (stop_) {
+                return;
+            }
+            seen = epoch_;
+        }
+        drain();
+    }
+}
+
+void JobPool::parallel_for(std::size_t n, std::size_t grain, const ChunkFn& fn) {
+    const std::size_t chunks = chunk_count(n, grain);
+    if (chunks == 0) {
+        return;
+    }
+    if (workers_.empty() || chunks == 1) {
+        for (std::size_t c = 0; c < chunks; ++c) {
+            fn(c, c * grain, std::min(n, (c + 1) * grain));
+        }
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        job_ = &fn;
+        n_ = n;
+        grain_ = grain;
+        chunks_ = chunks;
+        finished_ = 0;
+        next_.store(0, std::memory_order_release);
+        ++epoch_;
+    }
+    wake_.notify_all();
+    drain();
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return finished_ == chunks_; });
+    job_ = nullptr;
+}
+
+} // namespace snow

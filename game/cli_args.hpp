@@ -1,0 +1,41 @@
+/// @file cli_args.hpp
+/// @brief Strict parsing of command-line values shared by snow_run and snow_game:
+/// a bad value gives one message naming the flag, never a silent default.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace snow::cli {
+
+/// Thrown for a bad command line; the apps print what() and exit with status 2.
+struct UsageError {
+    std::string message;
+};
+
+/// Whole-string unsigned integer in [min, max]; throws UsageError naming `flag`.
+[[nodiscard]] std::uint64_t parse_uint(std::string_view flag, std::string_view text,
+                                       std::uint64_t min, std::uint64_t max);
+/// Whole-string finite number in (0, max]; throws UsageError naming `flag`.
+[[nodiscard]] double parse_positive(std::string_view flag, std::string_view text, double max);
+
+/// Walks argv; `value()` takes the argument after the current flag.
+class ArgReader {
+  public:
+    ArgReader(int argc, char** argv) : argc_(argc), argv_(argv) {}
+    [[nodiscard]] bool next();
+    [[nodiscard]] std::string_view flag() const { return flag_; }
+    /// The value following the current flag; throws UsageError if missing.
+    [[nodiscard]] std::string_view value();
+    [[noreturn]] void unknown() const;
+
+  private:
+    int argc_;
+    char** argv_;
+    int i_ = 0;
+    std::string_view flag_;
+};
+
+} // namespace snow::cli

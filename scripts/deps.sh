@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs the Debian packages snow needs, only those missing. Idempotent.
+# Usage: scripts/deps.sh            (everything: build, render, scenes, tests, bench)
+set -euo pipefail
+
+packages=(
+    g++ cmake ninja-build pkg-config python3
+    libglm-dev                                   # snow_sim (the only dependency of the simulation)
+    libglfw3-dev libosmesa6-dev libstb-dev python3-glad libimgui-dev  # snow_render, snow_game
+    libtinygltf-dev nlohmann-json3-dev           # snow_scene
+    googletest libgtest-dev libbenchmark-dev     # snow_tests, snow_bench
+    xvfb xauth                                   # window tests without a display
+    gnuplot-nox                                  # plots in docs/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "[deps] all ${#packages[@]} packages present"
+    exit 0
+fi
+
+echo "[deps] installing: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then
+        SUDO="sudo"
+    else
+        echo "[deps] error: not root and no sudo; install these packages: ${missing[*]}" >&2
+        exit 1
+    fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "[deps] done"

@@ -1,0 +1,47 @@
+#include "systems/flake_pool.hpp"
+
+#include <algorithm>
+
+namespace snow {
+
+void FlakePool::reset(std::uint32_t capacity) {
+    for (auto* v : {&px, &py, &pz, &vx, &vy, &vz, &k_over_m, &size}) {
+        v->assign(capacity, 0.0f);
+    }
+    mass_units.assign(capacity, 0);
+    free_stack.resize(capacity);
+    // Highest slot at the bottom so slot 0 is handed out first.
+    for (std::uint32_t i = 0; i < capacity; ++i) {
+        free_stack[i] = capacity - 1 - i;
+    }
+    alive = 0;
+    max_alive = 0;
+}
+
+bool FlakePool::acquire(std::uint32_t& slot) {
+    if (free_stack.empty()) {
+        return false;
+    }
+    slot = free_stack.back();
+    free_stack.pop_back();
+    ++alive;
+    max_alive = std::max(max_alive, alive);
+    return true;
+}
+
+void FlakePool::release(std::uint32_t slot) {
+    mass_units[slot] = 0;
+    vx[slot] = vy[slot] = vz[slot] = 0.0f;
+    free_stack.push_back(slot); // capacity was reserved in reset(): no allocation
+    --alive;
+}
+
+std::uint64_t FlakePool::airborne_units() const {
+    std::uint64_t sum = 0;
+    for (const std::uint32_t m : mass_units) {
+        sum += m;
+    }
+    return sum;
+}
+
+} // namespace snow

@@ -1,0 +1,43 @@
+/// @file fog.hpp
+/// @brief Fog settings (seeds 001 and 004). Declared by a scene or absent;
+/// absent means no fog code is compiled or run.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+enum class FogMode : std::uint8_t {
+    exponential, ///< e^(−density·z), seed 004
+    half_life,   ///< 0.5^(d/D), seed 001
+    layered,     ///< ∫ density(y) via table E(y), seed 001
+};
+
+/// A Gaussian (or Gabor, when frequency > 0) fog puff, seed 001.
+struct FogPuff {
+    glm::vec3 center{0.0f};
+    float sigma = 1.0f;
+    float density = 0.5f;
+    glm::vec3 frequency{0.0f}; ///< Gabor wave vector (rad/m); zero = plain Gaussian
+    float phase = 0.0f;
+};
+
+/// World resource.
+struct Fog {
+    FogMode mode = FogMode::exponential;
+    glm::vec3 color{0.75f, 0.78f, 0.82f};
+    float density = 0.04f;      ///< exponential: 1/m
+    float half_distance = 30.0f; ///< half_life: D (m)
+    float layer_bottom = 0.0f;  ///< layered: density is zero below ..
+    float layer_top = 3.0f;     ///< .. and above
+    float layer_density = 0.15f; ///< layered: peak density (1/m)
+    std::vector<FogPuff> puffs;
+};
+
+[[nodiscard]] std::string validate(const Fog& f);
+
+} // namespace snow

@@ -1,0 +1,36 @@
+#include "systems/sim_config.hpp"
+
+#include <array>
+#include <utility>
+
+namespace snow {
+
+namespace {
+constexpr std::array<std::pair<Integrator, std::string_view>, 5> integrator_names{{
+    {Integrator::explicit_euler, "euler"},
+    {Integrator::semi_implicit_euler, "semi_implicit"},
+    {Integrator::exponential, "exponential"},
+    {Integrator::rk4, "rk4"},
+    {Integrator::automatic, "auto"},
+}};
+} // namespace
+
+std::string_view integrator_name(Integrator i) {
+    for (const auto& [value, name] : integrator_names) {
+        if (value == i) {
+            return name;
+        }
+    }
+    return "unknown";
+}
+
+std::optional<Integrator> parse_integrator(std::string_view name) {
+    for (const auto& [value, n] : integrator_names) {
+        if (n == name) {
+            return value;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace snow

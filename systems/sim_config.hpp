@@ -1,0 +1,41 @@
+/// @file sim_config.hpp
+/// @brief Global simulation settings and the tick clock (World resources).
+#pragma once
+
+#include "systems/geometry.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace snow {
+
+enum class Integrator : std::uint8_t {
+    explicit_euler,      ///< v += a·dt, p += v·dt (seeds 002/003); guarded when stiff
+    semi_implicit_euler, ///< implicit drag, then p += v_new·dt (never overshoots)
+    exponential,         ///< exact update for gravity + linear drag to constant wind
+    rk4,                 ///< classical Runge-Kutta, the accuracy reference
+    automatic,           ///< explicit Euler where k·dt/m <= 0.5, exponential elsewhere
+};
+
+[[nodiscard]] std::string_view integrator_name(Integrator i);
+[[nodiscard]] std::optional<Integrator> parse_integrator(std::string_view name);
+
+struct SimConfig {
+    std::uint64_t seed = 1;
+    float dt = 1.0f / 60.0f;              ///< fixed tick length (s)
+    glm::vec3 gravity{0.0f, -9.81f, 0.0f}; ///< m/s^2
+    Integrator integrator = Integrator::explicit_euler;
+    Aabb bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 12.0f, 10.0f}}; ///< flakes leaving it are removed
+    std::uint32_t max_flakes = 50000;
+    unsigned threads = 1;
+};
+
+/// Returns an error message naming the bad field, or an empty string.
+[[nodiscard]] std::string validate(const SimConfig& c);
+
+struct SimClock {
+    std::uint64_t tick = 0; ///< ticks completed
+};
+
+} // namespace snow

@@ -1,0 +1,99 @@
+/// @file simulation.hpp
+/// @brief The Simulation: a World, its Schedule and a job pool. The one
+/// object an embedder creates (no GL needed).
+#pragma once
+
+#include "ecs/job_pool.hpp"
+#include "ecs/schedule.hpp"
+#include "ecs/world.hpp"
+#include "systems/colliders.hpp"
+#include "systems/emitter.hpp"
+#include "systems/flake_pool.hpp"
+#include "systems/fog.hpp"
+#include "systems/mass_ledger.hpp"
+#include "systems/occlusion.hpp"
+#include "systems/sim_config.hpp"
+#include "systems/snow_surface.hpp"
+#include "systems/spectral_snow.hpp"
+#include "systems/systems.hpp"
+#include "systems/visuals.hpp"
+#include "systems/wind.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Thrown for invalid arguments (NaN, negative sizes, ...); the message names
+/// the field. The simulation is left exactly as it was.
+class SnowError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Saved simulation state for rewind (tests) and reset (the game).
+struct Snapshot;
+
+class Simulation {
+  public:
+    /// Throws SnowError if the config is invalid.
+    explicit Simulation(const SimConfig& config = {});
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    // -- building the scene (each validates and throws SnowError) --
+    Entity add_emitter(const Emitter& e);
+    void set_wind(const Wind& w);
+    void clear_wind();
+    /// A snow surface entity; `owner` is the solid it lies on (null for the
+    /// ground). Flakes reaching an owner's top are kept only where one of its
+    /// surfaces covers that point.
+    Entity add_surface(const SurfaceDef& def, Entity owner = null_entity);
+    Entity add_box(const Aabb& box);
+    Entity add_sphere(const glm::vec3& center, float radius);
+    Entity add_mesh_collider(std::vector<glm::vec3> triangles);
+    void set_occlusion(const OcclusionCamera& cam);
+    void set_fog(const Fog& fog);
+    void set_spectral(const SpectralSnow& s);
+    /// Removes an entity; snow settled on its surfaces counts as removed.
+    void remove(Entity e);
+
+    // -- stepping --
+    /// Advances exactly one tick of config().dt.
+    void tick();
+    void run(std::uint64_t ticks);
+
+    // -- reading --
+    [[nodiscard]] World& world() { return world_; }
+    [[nodiscard]] const World& world() const { return world_; }
+    [[nodiscard]] const SimConfig& config() const { return world_.resource<SimConfig>(); }
+    [[nodiscard]] std::uint64_t tick_count() const { return world_.resource<SimClock>().tick; }
+    [[nodiscard]] const FlakePool& flakes() const { return world_.resource<FlakePool>(); }
+    [[nodiscard]] const Schedule& schedule() const { return schedule_; }
+    [[nodiscard]] const SimCounters& counters() const { return world_.resource<SimCounters>(); }
+    /// 64-bit hash of the canonical simulation state (flakes, cells, wind, clock).
+    [[nodiscard]] std::uint64_t state_hash() const;
+    [[nodiscard]] MassReport mass() const;
+    /// NaN/inf values in flake and wind state (0 for a healthy run).
+    [[nodiscard]] std::uint64_t nonfinite_count() const;
+
+    /// Sets the integrator (the rest of the config is fixed at creation).
+    void set_integrator(Integrator i);
+
+    [[nodiscard]] std::unique_ptr<Snapshot> save() const;
+    void restore(const Snapshot& s);
+
+  private:
+    void build_schedule();
+    void bump_geometry();
+
+    World world_;
+    Schedule schedule_;
+    std::unique_ptr<JobPool> jobs_;
+};
+
+} // namespace snow

@@ -1,0 +1,71 @@
+/// @file snow_surface.hpp
+/// @brief A heightfield of settled snow over the top of an object (seed 002 §1,
+/// seed 003 §IV). Several may exist per object; cells count whole mass units.
+#pragma once
+
+#include "ecs/entity.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Settings to create a surface; see make_surface().
+struct SurfaceDef {
+    float x0 = 0.0f, z0 = 0.0f; ///< world position of the grid corner (min x, min z)
+    float size_x = 1.0f, size_z = 1.0f; ///< extent (m)
+    float cell = 0.05f;         ///< cell edge (m)
+    float base_y = 0.0f;        ///< height of the bare top for a flat surface (m)
+    float slope_x = 0.0f;       ///< d(base)/dx, for tilted tops (m/m)
+    float slope_z = 0.0f;       ///< d(base)/dz
+    float edge_limit = 0.1f;    ///< snow depth (m) at an edge above which excess spills
+    bool spills = true;         ///< false for the ground: its edges keep their snow
+    float laplacian_limit = 20.0f; ///< cap on |∇²h| (1/m), seed 002 §3
+};
+
+/// Largest grid a surface may have (cells per side); larger is an input error.
+inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
+
+/// Component. Heights are compared as integer "levels" in units of
+/// `unit_height`, so rolling and smoothing are exact and order-free.
+struct SnowSurface {
+    float x0 = 0.0f, z0 = 0.0f, cell = 0.05f;
+    std::uint32_t nx = 0, nz = 0;
+    float unit_height = 0.0f;            ///< metres of snow one unit adds to a cell
+    std::vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
+    std::vector<std::uint32_t> snow;      ///< settled units per cell (row-major, x fastest)
+    std::uint32_t edge_limit_units = 0;
+    std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
+    bool spills = true;
+    // Dirty rectangle (inclusive cell bounds) for redistribution; empty when lo > hi.
+    std::uint32_t dirty_x0 = 1, dirty_z0 = 1, dirty_x1 = 0, dirty_z1 = 0;
+
+    [[nodiscard]] std::size_t cell_count() const { return snow.size(); }
+    [[nodiscard]] std::size_t index(std::uint32_t ix, std::uint32_t iz) const {
+        return static_cast<std::size_t>(iz) * nx + ix;
+    }
+    [[nodiscard]] std::int64_t level(std::size_t i) const { return base_level[i] + snow[i]; }
+    /// World height (m) of the snow top of cell i.
+    [[nodiscard]] float top_y(std::size_t i) const {
+        return static_cast<float>(static_cast<double>(level(i)) * unit_height);
+    }
+    /// Cell under world (x, z); false when outside the grid.
+    [[nodiscard]] bool cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const;
+    void mark_dirty(std::uint32_t ix, std::uint32_t iz);
+    [[nodiscard]] std::uint64_t settled_units() const;
+};
+
+/// Component on a surface entity: the solid it lies on (null for the ground).
+struct SurfaceOf {
+    Entity owner;
+};
+
+/// Tag component on a solid (collider entity) that owns at least one surface.
+struct SnowHolder {};
+
+/// Builds a surface from a definition; returns an error naming the bad field
+/// in `error` (and an empty surface) for invalid values.
+[[nodiscard]] SnowSurface make_surface(const SurfaceDef& def, std::string& error);
+
+} // namespace snow

@@ -1,0 +1,117 @@
+// validate() for every user-facing settings struct, in one place (Box2D's
+// def-struct habit): the facade and the scene loader both call these.
+#include "systems/validation.hpp"
+
+#include "systems/emitter.hpp"
+#include "systems/fog.hpp"
+#include "systems/sim_config.hpp"
+#include "systems/spectral_snow.hpp"
+#include "systems/units.hpp"
+#include "systems/wind.hpp"
+
+namespace snow {
+
+namespace {
+bool power_of_two(std::uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
+} // namespace
+
+std::string validate(const SimConfig& c) {
+    std::string e;
+    check::positive(e, "simulation.dt", c.dt);
+    check::at_most(e, "simulation.dt", c.dt, 1.0);
+    check::finite3(e, "simulation.gravity", c.gravity);
+    check::finite3(e, "simulation.bounds.min", c.bounds.min);
+    check::finite3(e, "simulation.bounds.max", c.bounds.max);
+    check::ordered(e, "simulation.bounds.min.x", c.bounds.min.x, "simulation.bounds.max.x", c.bounds.max.x);
+    check::ordered(e, "simulation.bounds.min.y", c.bounds.min.y, "simulation.bounds.max.y", c.bounds.max.y);
+    check::ordered(e, "simulation.bounds.min.z", c.bounds.min.z, "simulation.bounds.max.z", c.bounds.max.z);
+    check::at_most(e, "simulation.max_flakes", c.max_flakes, 16u << 20);
+    if (c.threads == 0) {
+        check::fail(e, "simulation.threads", ">= 1", 0);
+    }
+    check::at_most(e, "simulation.threads", c.threads, 256);
+    return e;
+}
+
+std::string validate(const Emitter& m) {
+    std::string e;
+    check::non_negative(e, "emitter.rate", m.rate);
+    check::at_most(e, "emitter.rate", m.rate, 1.0e8);
+    const double min_g = unit_kg * 1000.0;
+    const double max_g = min_g * max_flake_units;
+    check::positive(e, "emitter.mass_min_g", m.mass_min_g);
+    check::positive(e, "emitter.mass_max_g", m.mass_max_g);
+    if (std::isfinite(m.mass_min_g) && m.mass_min_g > 0.0f && m.mass_min_g + 1e-9 < min_g) {
+        check::fail(e, "emitter.mass_min_g", ">= " + std::to_string(min_g), m.mass_min_g);
+    }
+    check::at_most(e, "emitter.mass_max_g", m.mass_max_g, max_g + 1e-9);
+    check::ordered(e, "emitter.mass_min_g", m.mass_min_g, "emitter.mass_max_g", m.mass_max_g);
+    check::positive(e, "emitter.size_min", m.size_min);
+    check::positive(e, "emitter.size_max", m.size_max);
+    check::at_most(e, "emitter.size_max", m.size_max, 1.0);
+    check::ordered(e, "emitter.size_min", m.size_min, "emitter.size_max", m.size_max);
+    check::positive(e, "emitter.fall_speed_min", m.fall_speed_min);
+    check::positive(e, "emitter.fall_speed_max", m.fall_speed_max);
+    check::at_most(e, "emitter.fall_speed_max", m.fall_speed_max, 1000.0);
+    check::ordered(e, "emitter.fall_speed_min", m.fall_speed_min, "emitter.fall_speed_max",
+                   m.fall_speed_max);
+    return e;
+}
+
+std::string validate(const Wind& w) {
+    std::string e;
+    check::finite3(e, "wind.base", w.base);
+    check::finite3(e, "wind.current", w.current);
+    check::finite3(e, "wind.deviation", w.deviation);
+    check::non_negative(e, "wind.walk", w.walk);
+    check::non_negative(e, "wind.max_deviation", w.max_deviation);
+    check::non_negative(e, "wind.gust_strength", w.gust_strength);
+    check::non_negative(e, "wind.gust_rate", w.gust_rate);
+    check::positive(e, "wind.gust_duration", w.gust_duration);
+    check::non_negative(e, "wind.gust_left", w.gust_left);
+    for (const float c : {w.base.x, w.base.y, w.base.z}) {
+        check::at_most(e, "wind.base (each component's magnitude)", std::abs(c), 200.0);
+    }
+    return e;
+}
+
+std::string validate(const Fog& f) {
+    std::string e;
+    check::finite3(e, "fog.color", f.color);
+    check::non_negative(e, "fog.density", f.density);
+    check::positive(e, "fog.half_distance", f.half_distance);
+    check::finite(e, "fog.layer_bottom", f.layer_bottom);
+    check::finite(e, "fog.layer_top", f.layer_top);
+    check::ordered(e, "fog.layer_bottom", f.layer_bottom, "fog.layer_top", f.layer_top);
+    check::non_negative(e, "fog.layer_density", f.layer_density);
+    for (std::size_t i = 0; i < f.puffs.size(); ++i) {
+        const std::string p = "fog.puffs[" + std::to_string(i) + "]";
+        check::finite3(e, p + ".center", f.puffs[i].center);
+        check::positive(e, p + ".sigma", f.puffs[i].sigma);
+        check::non_negative(e, p + ".density", f.puffs[i].density);
+        check::finite3(e, p + ".frequency", f.puffs[i].frequency);
+        check::finite(e, p + ".phase", f.puffs[i].phase);
+    }
+    return e;
+}
+
+std::string validate(const SpectralSnow& s) {
+    std::string e;
+    if (!power_of_two(s.size_xy) || s.size_xy < 8 || s.size_xy > 512) {
+        check::fail(e, "spectral.size_xy", "a power of two in [8, 512]", s.size_xy);
+    }
+    if (!power_of_two(s.size_t) || s.size_t < 4 || s.size_t > 256) {
+        check::fail(e, "spectral.size_t", "a power of two in [4, 256]", s.size_t);
+    }
+    check::positive(e, "spectral.speed", s.speed);
+    check::positive(e, "spectral.band_low", s.band_low);
+    check::positive(e, "spectral.band_high", s.band_high);
+    check::ordered(e, "spectral.band_low", s.band_low, "spectral.band_high", s.band_high);
+    check::at_most(e, "spectral.band_high", s.band_high, s.size_xy / 2.0);
+    check::non_negative(e, "spectral.opacity", s.opacity);
+    check::at_most(e, "spectral.opacity", s.opacity, 1.0);
+    check::non_negative(e, "spectral.start_distance", s.start_distance);
+    return e;
+}
+
+} // namespace snow
