@@ -1,0 +1,43 @@
+# cmake --install exports snowConfig.cmake so `find_package(snow)` gives
+# snow::ecs, snow::sim and, when built, snow::render and snow::scene.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(SNOW_EXPORTED snow_ecs snow_sim)
+set(SNOW_HEADER_DIRS ecs systems)
+foreach(t snow_render snow_render_glad snow_scene)
+    if(TARGET ${t})
+        list(APPEND SNOW_EXPORTED ${t})
+    endif()
+endforeach()
+if(TARGET snow_render)
+    list(APPEND SNOW_HEADER_DIRS render)
+endif()
+if(TARGET snow_scene)
+    list(APPEND SNOW_HEADER_DIRS game)
+endif()
+
+foreach(t ${SNOW_EXPORTED})
+    string(REPLACE "snow_" "" export_name ${t})
+    set_target_properties(${t} PROPERTIES EXPORT_NAME ${export_name})
+endforeach()
+
+install(TARGETS ${SNOW_EXPORTED} EXPORT snowTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
+foreach(dir ${SNOW_HEADER_DIRS})
+    install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir}
+            FILES_MATCHING PATTERN "*.hpp")
+endforeach()
+# The public facade: #include <snow/snow.hpp>
+install(FILES systems/snow.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
+
+install(EXPORT snowTargets NAMESPACE snow:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)
+configure_package_config_file(cmake/snowConfig.cmake.in
+    ${PROJECT_BINARY_DIR}/snowConfig.cmake
+    INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/snowConfigVersion.cmake
+    COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/snowConfig.cmake ${PROJECT_BINARY_DIR}/snowConfigVersion.cmake
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)

@@ -1,0 +1,33 @@
+/// @file sample_scenes.hpp
+/// @brief Scenes built in code, shared by tests, benchmarks and examples
+/// (Box2D's shared/ habit), so they all measure the same thing.
+#pragma once
+
+#include "systems/simulation.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace snow {
+
+struct YardOptions {
+    std::uint64_t seed = 7;
+    unsigned threads = 1;
+    float dt = 1.0f / 60.0f;
+    Integrator integrator = Integrator::explicit_euler;
+    std::uint32_t ground_cells = 128; ///< ground surface is ground_cells² cells
+    std::uint32_t max_flakes = 20000;
+    float emitter_rate = 3000.0f;     ///< flakes per second; 0 = no emitter
+    bool wind = true;
+    std::uint32_t prefill = 0;        ///< flakes placed airborne before tick 0
+};
+
+/// A 16 m × 16 m yard: ground surface, a garage box with a snow-holding flat
+/// roof, a sphere (snowman), steady wind along +x, an emitter.
+[[nodiscard]] std::unique_ptr<Simulation> make_yard(const YardOptions& o = {});
+
+/// Places `count` airborne flakes uniformly in the upper part of the bounds
+/// (deterministic in the seed); for benchmarks at a fixed flake count.
+void prefill_flakes(Simulation& sim, std::uint32_t count);
+
+} // namespace snow
