@@ -15,6 +15,11 @@ namespace snow {
 
 namespace {
 
+/// World resource: per-chunk stiff counts of the last integrate pass.
+struct StiffCounts {
+    std::vector<std::uint64_t> per_chunk;
+};
+
 using AxisRule = void (*)(float&, float&, float, float, float, float);
 
 struct Params {
@@ -111,8 +116,13 @@ void integrate_system(World& w) {
     const Params q{cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt};
     const std::size_t n = f.capacity();
     const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
-    // One counter per chunk, summed in chunk order (thread-count independent).
-    static thread_local std::vector<std::uint64_t> stiff;
+    // One counter per chunk, summed in chunk order (thread-count independent);
+    // kept in the world so no tick after the first allocates.
+    auto* scratch = w.try_resource<StiffCounts>();
+    if (scratch == nullptr) {
+        scratch = &w.set_resource<StiffCounts>();
+    }
+    std::vector<std::uint64_t>& stiff = scratch->per_chunk;
     stiff.assign(chunks, 0);
     for_chunks(w, n, flake_grain, [&](std::size_t c, std::size_t b, std::size_t e) {
         stiff[c] = integrate_chunk(cfg.integrator, f, b, e, q);

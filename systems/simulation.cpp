@@ -21,15 +21,6 @@ bool flakes_alive(const World& w) { return w.resource<FlakePool>().alive > 0; }
 
 } // namespace
 
-/// Everything a tick can change; geometry and settings are not included
-/// (a snapshot restores onto the same scene).
-struct Snapshot {
-    FlakePool flakes;
-    SimClock clock;
-    MassLedger ledger;
-    std::optional<Wind> wind;
-    std::vector<std::pair<Entity, SnowSurface>> surfaces;
-};
 
 Simulation::Simulation(const SimConfig& config) {
     throw_if(validate(config));

@@ -13,6 +13,7 @@
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snapshot.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/spectral_snow.hpp"
 #include "systems/systems.hpp"
@@ -33,9 +34,6 @@ class SnowError : public std::runtime_error {
   public:
     using std::runtime_error::runtime_error;
 };
-
-/// Saved simulation state for rewind (tests) and reset (the game).
-struct Snapshot;
 
 class Simulation {
   public:
