@@ -5,6 +5,7 @@
 
 #include "ecs/entity.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ struct SnowSurface {
     bool spills = true;
     // Dirty rectangle (inclusive cell bounds) for redistribution; empty when lo > hi.
     std::uint32_t dirty_x0 = 1, dirty_z0 = 1, dirty_x1 = 0, dirty_z1 = 0;
+    /// Upper bound of every cell's level, raised by mark_dirty(); lets deposit
+    /// skip flakes far above the surface. Whoever changes `snow` calls mark_dirty.
+    std::int64_t level_bound = 0;
 
     [[nodiscard]] std::size_t cell_count() const { return snow.size(); }
     [[nodiscard]] std::size_t index(std::uint32_t ix, std::uint32_t iz) const {
@@ -52,7 +56,29 @@ struct SnowSurface {
     }
     /// Cell under world (x, z); false when outside the grid.
     [[nodiscard]] bool cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const;
+    /// Records that cell (ix, iz) changed: grows the dirty rectangle and level_bound.
     void mark_dirty(std::uint32_t ix, std::uint32_t iz);
+    /// True when no cell waits for redistribution.
+    [[nodiscard]] bool dirty_empty() const { return dirty_x0 > dirty_x1 || dirty_z0 > dirty_z1; }
+    /// Indices of the existing 4-neighbours of (ix, iz), in the order -x, +x, -z, +z
+    /// (cells off the grid are left out); returns how many were written.
+    std::uint32_t neighbours(std::uint32_t ix, std::uint32_t iz, std::size_t (&out)[4]) const {
+        const std::size_t i = index(ix, iz);
+        std::uint32_t n = 0;
+        if (ix > 0) {
+            out[n++] = i - 1;
+        }
+        if (ix + 1 < nx) {
+            out[n++] = i + 1;
+        }
+        if (iz > 0) {
+            out[n++] = i - nx;
+        }
+        if (iz + 1 < nz) {
+            out[n++] = i + nx;
+        }
+        return n;
+    }
     [[nodiscard]] std::uint64_t settled_units() const;
 };
 

@@ -1,0 +1,131 @@
+// SnowSurface construction and cell queries. Heights are integer levels of
+// `unit_height` so deposit and smoothing compare and move snow exactly.
+#include "systems/snow_surface.hpp"
+
+#include "systems/units.hpp"
+#include "systems/validation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace snow {
+
+namespace {
+
+/// Largest level magnitude a surface may use: differences and products in
+/// redistribution stay far inside 64/128-bit range.
+constexpr double max_level = 1.0e15;
+
+/// Cells along one side: size / cell rounded, checked against the grid limits.
+std::uint32_t cells_per_side(std::string& err, const char* field, double size, double cell) {
+    const double n = size / cell;
+    if (!(n >= 0.5)) {
+        check::fail(err, field, ">= 1", n);
+    } else if (n >= max_surface_cells_per_side + 0.5) {
+        check::fail(err, field, "<= " + std::to_string(max_surface_cells_per_side), n);
+    }
+    return err.empty() ? static_cast<std::uint32_t>(std::llround(n)) : 0;
+}
+
+} // namespace
+
+SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
+    std::string e;
+    check::finite(e, "surface.x0", def.x0);
+    check::finite(e, "surface.z0", def.z0);
+    check::positive(e, "surface.size_x", def.size_x);
+    check::positive(e, "surface.size_z", def.size_z);
+    check::positive(e, "surface.cell", def.cell);
+    check::finite(e, "surface.base_y", def.base_y);
+    check::finite(e, "surface.slope_x", def.slope_x);
+    check::finite(e, "surface.slope_z", def.slope_z);
+    check::non_negative(e, "surface.edge_limit", def.edge_limit);
+    check::positive(e, "surface.laplacian_limit", def.laplacian_limit);
+    const double cell = def.cell;
+    const double unit_height = unit_kg / (fresh_snow_density * cell * cell);
+    if (e.empty() && !(std::isfinite(unit_height) && unit_height > 0.0)) {
+        check::fail(e, "surface.cell", "large enough for a finite snow unit height", cell);
+    }
+    std::uint32_t nx = 0, nz = 0;
+    if (e.empty()) {
+        nx = cells_per_side(e, "surface.size_x / surface.cell (cells per side)", def.size_x, cell);
+        nz = cells_per_side(e, "surface.size_z / surface.cell (cells per side)", def.size_z, cell);
+    }
+    if (e.empty()) {
+        // A plane's extremes are at its corners; all levels must stay exact integers.
+        const double reach = std::abs(static_cast<double>(def.base_y)) +
+                             std::abs(static_cast<double>(def.slope_x)) * nx * cell +
+                             std::abs(static_cast<double>(def.slope_z)) * nz * cell;
+        check::at_most(e, "surface.base_y and slopes (in snow units of this cell size)",
+                       reach / unit_height, max_level);
+    }
+    if (!e.empty()) {
+        error = e;
+        return {};
+    }
+    error.clear();
+
+    SnowSurface s;
+    s.x0 = def.x0;
+    s.z0 = def.z0;
+    s.cell = def.cell;
+    s.nx = nx;
+    s.nz = nz;
+    s.unit_height = static_cast<float>(unit_height);
+    s.spills = def.spills;
+    const std::size_t n = static_cast<std::size_t>(nx) * nz;
+    s.base_level.resize(n);
+    s.snow.assign(n, 0);
+    for (std::uint32_t iz = 0; iz < nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < nx; ++ix) {
+            const double y =
+                def.base_y + def.slope_x * ((ix + 0.5) * cell) + def.slope_z * ((iz + 0.5) * cell);
+            s.base_level[s.index(ix, iz)] = std::llround(y / unit_height);
+        }
+    }
+    s.level_bound = *std::max_element(s.base_level.begin(), s.base_level.end());
+    // A limit beyond what a cell can hold never triggers: clamp instead of overflowing.
+    const double edge = std::round(def.edge_limit / unit_height);
+    s.edge_limit_units = static_cast<std::uint32_t>(
+        std::min(edge, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
+    // seed 002 §3: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
+    const double lap = std::round(def.laplacian_limit * cell * cell / unit_height);
+    s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_level));
+    return s;
+}
+
+bool SnowSurface::cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const {
+    const float fx = (x - x0) / cell;
+    const float fz = (z - z0) / cell;
+    // Written so NaN compares false and lands outside.
+    if (!(fx >= 0.0f && fz >= 0.0f && fx < static_cast<float>(nx) && fz < static_cast<float>(nz))) {
+        return false;
+    }
+    ix = std::min(static_cast<std::uint32_t>(fx), nx - 1);
+    iz = std::min(static_cast<std::uint32_t>(fz), nz - 1);
+    return true;
+}
+
+void SnowSurface::mark_dirty(std::uint32_t ix, std::uint32_t iz) {
+    if (dirty_empty()) {
+        dirty_x0 = dirty_x1 = ix;
+        dirty_z0 = dirty_z1 = iz;
+    } else {
+        dirty_x0 = std::min(dirty_x0, ix);
+        dirty_x1 = std::max(dirty_x1, ix);
+        dirty_z0 = std::min(dirty_z0, iz);
+        dirty_z1 = std::max(dirty_z1, iz);
+    }
+    level_bound = std::max(level_bound, level(index(ix, iz)));
+}
+
+std::uint64_t SnowSurface::settled_units() const {
+    std::uint64_t sum = 0;
+    for (const std::uint32_t u : snow) {
+        sum += u;
+    }
+    return sum;
+}
+
+} // namespace snow

@@ -1,0 +1,191 @@
+// redistribute: the Laplacian cap of seed 002 §3 must smooth any pile with no
+// negative cell, exact mass, no new maximum (RELIABILITY.md: a mass check
+// alone misses a blow-up) and no sweep-direction bias.
+#include "systems/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace snow {
+namespace {
+
+struct Field {
+    Simulation sim;
+    Entity e;
+    explicit Field(const SurfaceDef& def) : sim(SimConfig{}), e(sim.add_surface(def)) {}
+    SnowSurface& s() { return sim.world().get<SnowSurface>(e); }
+    void put(std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
+        s().snow[s().index(ix, iz)] += units;
+        s().mark_dirty(ix, iz);
+    }
+    /// Runs the system until the surface is clean; returns the calls it took.
+    int settle(int max_calls) {
+        int calls = 0;
+        while (!s().dirty_empty() && calls < max_calls) {
+            redistribute_system(sim.world());
+            ++calls;
+        }
+        return calls;
+    }
+    [[nodiscard]] std::uint32_t peak() {
+        return *std::max_element(s().snow.begin(), s().snow.end());
+    }
+    /// n·h − Σ neighbour levels of the cell (the discrete Laplacian of seed 002 §3).
+    std::int64_t laplacian(std::uint32_t ix, std::uint32_t iz) {
+        std::size_t nb[4];
+        const std::uint32_t n = s().neighbours(ix, iz, nb);
+        std::int64_t lap = n * s().level(s().index(ix, iz));
+        for (std::uint32_t k = 0; k < n; ++k) {
+            lap -= s().level(nb[k]);
+        }
+        return lap;
+    }
+    /// Largest Laplacian over cells that hold snow.
+    std::int64_t worst_laplacian() {
+        std::int64_t worst = std::numeric_limits<std::int64_t>::min();
+        for (std::uint32_t iz = 0; iz < s().nz; ++iz) {
+            for (std::uint32_t ix = 0; ix < s().nx; ++ix) {
+                if (s().snow[s().index(ix, iz)] > 0) {
+                    worst = std::max(worst, laplacian(ix, iz));
+                }
+            }
+        }
+        return worst;
+    }
+};
+
+SurfaceDef square(std::uint32_t cells, float laplacian_limit = 20.0f) {
+    SurfaceDef d;
+    d.size_x = d.size_z = 0.05f * static_cast<float>(cells);
+    d.cell = 0.05f;
+    d.spills = false;
+    d.laplacian_limit = laplacian_limit;
+    return d;
+}
+
+TEST(Redistribute, SpikeSmoothsSymmetricallyWithExactMass) {
+    Field f(square(31));
+    const std::uint32_t spike = 10000;
+    f.put(15, 15, spike);
+    const int calls = f.settle(100);
+    SnowSurface& s = f.s();
+    EXPECT_TRUE(s.dirty_empty()) << "still smoothing after " << calls << " ticks";
+    EXPECT_EQ(s.settled_units(), spike);
+    EXPECT_LE(f.peak(), spike); // no cell wrapped below zero (it would read huge)
+    EXPECT_LT(s.snow[s.index(15, 15)], spike);
+    EXPECT_GT(s.snow[s.index(14, 15)], 0u);
+    EXPECT_LE(f.worst_laplacian(), s.laplacian_limit_units);
+    EXPECT_GT(f.sim.counters().smoothing_iterations, 0u);
+    // 90° rotation about the centre maps (x, z) to (n-1-z, x): the result must not care.
+    for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+            ASSERT_EQ(s.snow[s.index(ix, iz)], s.snow[s.index(s.nx - 1 - iz, ix)])
+                << ix << "," << iz;
+            ASSERT_EQ(s.snow[s.index(ix, iz)], s.snow[s.index(iz, ix)]) << ix << "," << iz;
+        }
+    }
+}
+
+TEST(Redistribute, CornerSpikeUsesOnlyExistingNeighbours) {
+    Field f(square(12));
+    f.put(0, 0, 20000);
+    f.settle(200);
+    SnowSurface& s = f.s();
+    EXPECT_TRUE(s.dirty_empty());
+    EXPECT_EQ(s.settled_units(), 20000u);
+    EXPECT_LE(f.peak(), 20000u);
+    EXPECT_LE(f.worst_laplacian(), s.laplacian_limit_units);
+    for (std::uint32_t iz = 0; iz < s.nz; ++iz) { // mirror symmetric about the diagonal
+        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+            ASSERT_EQ(s.snow[s.index(ix, iz)], s.snow[s.index(iz, ix)]);
+        }
+    }
+}
+
+TEST(Redistribute, FlatSnowWithinTheCapDoesNotMove) {
+    Field f(square(8));
+    for (std::uint32_t iz = 0; iz < 8; ++iz) {
+        for (std::uint32_t ix = 0; ix < 8; ++ix) {
+            f.put(ix, iz, 700 + 10 * ((ix + iz) % 2)); // ripples of 10 units, cap is 2500
+        }
+    }
+    const auto before = f.s().snow;
+    redistribute_system(f.sim.world());
+    EXPECT_EQ(f.s().snow, before);
+    EXPECT_TRUE(f.s().dirty_empty());
+    EXPECT_EQ(f.sim.counters().smoothing_iterations, 1u);
+}
+
+TEST(Redistribute, HugePileNeverOvershootsAcrossTicks) {
+    // Far more than one tick's iterations can spread: the work continues on
+    // later ticks, and every intermediate state stays bounded and exact.
+    Field f(square(64));
+    const std::uint32_t pile = 50'000'000;
+    f.put(32, 32, pile);
+    std::uint32_t previous_peak = pile;
+    int ticks = 0;
+    for (; ticks < 2000 && !f.s().dirty_empty(); ++ticks) {
+        redistribute_system(f.sim.world());
+        ASSERT_EQ(f.s().settled_units(), pile) << "tick " << ticks;
+        const std::uint32_t peak = f.peak();
+        ASSERT_LE(peak, previous_peak) << "tick " << ticks; // the maximum never grows
+        previous_peak = peak;
+    }
+    EXPECT_GT(ticks, 1); // it needed more than one tick
+    EXPECT_TRUE(f.s().dirty_empty());
+    EXPECT_LE(f.worst_laplacian(), f.s().laplacian_limit_units);
+}
+
+TEST(Redistribute, TinyCapStaysStableAndTerminates) {
+    // A cap of one unit: integer flows can stall short of it, but never oscillate or blow up.
+    Field f(square(16, 1.0e-4f));
+    ASSERT_EQ(f.s().laplacian_limit_units, 1);
+    f.put(8, 8, 1000);
+    f.put(3, 12, 1000);
+    f.settle(500);
+    EXPECT_TRUE(f.s().dirty_empty());
+    EXPECT_EQ(f.s().settled_units(), 2000u);
+    EXPECT_LE(f.peak(), 1000u);
+    // Where it stalled, every lower neighbour is within 7 levels (flow is d/8 per edge).
+    EXPECT_LE(f.worst_laplacian(), 4 * 7);
+}
+
+TEST(Redistribute, SlopedBaseNeverTakesMoreThanACellHolds) {
+    // A steep base: bare cells along the upper edge violate the cap by shape
+    // alone and must not give snow they do not have.
+    SurfaceDef d = square(20);
+    d.slope_x = 3.0f;
+    d.base_y = 1.0f;
+    Field f(d);
+    for (std::uint32_t iz = 0; iz < 20; iz += 3) {
+        f.put(19, iz, 30000);
+    }
+    const std::uint64_t total = f.s().settled_units();
+    f.settle(1000);
+    EXPECT_TRUE(f.s().dirty_empty());
+    EXPECT_EQ(f.s().settled_units(), total);
+    EXPECT_LE(f.peak(), 30000u);
+    // The snow moved downhill (towards -x).
+    std::uint64_t moment = 0;
+    for (std::uint32_t iz = 0; iz < 20; ++iz) {
+        for (std::uint32_t ix = 0; ix < 20; ++ix) {
+            moment += static_cast<std::uint64_t>(ix) * f.s().snow[f.s().index(ix, iz)];
+        }
+    }
+    EXPECT_LT(moment, 19 * total);
+}
+
+TEST(Redistribute, OnlyTheDirtyRegionIsTouched) {
+    Field f(square(40));
+    f.s().snow[f.s().index(5, 5)] = 9000; // not marked: left alone
+    f.put(30, 30, 9000);
+    f.settle(100);
+    EXPECT_EQ(f.s().snow[f.s().index(5, 5)], 9000u);
+    EXPECT_LT(f.s().snow[f.s().index(30, 30)], 9000u);
+}
+
+} // namespace
+} // namespace snow
