@@ -13,9 +13,6 @@ endforeach()
 if(TARGET snow_render)
     list(APPEND SNOW_HEADER_DIRS render)
 endif()
-if(TARGET snow_scene)
-    list(APPEND SNOW_HEADER_DIRS game)
-endif()
 
 foreach(t ${SNOW_EXPORTED})
     string(REPLACE "snow_" "" export_name ${t})
@@ -30,6 +27,10 @@ foreach(dir ${SNOW_HEADER_DIRS})
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir}
             FILES_MATCHING PATTERN "*.hpp")
 endforeach()
+# snow::scene's one public header (the scene_*.hpp beside it are internals).
+if(TARGET snow_scene)
+    install(FILES game/scene_loader.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/game)
+endif()
 # The public facade: #include <snow/snow.hpp>
 install(FILES systems/snow.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
 

@@ -1,0 +1,69 @@
+#include "game/hud.hpp"
+
+#include "game/game_input.hpp"
+#include "systems/units.hpp"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+namespace snow {
+
+Hud::Hud(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini next to the player's files
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+Hud::~Hud() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+bool Hud::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+
+void Hud::draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& info) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("snow", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    const MassReport m = sim.mass();
+    ImGui::Text("%.1f fps  tick %llu%s", static_cast<double>(info.fps),
+                static_cast<unsigned long long>(sim.tick_count()), info.paused ? "  PAUSED" : "");
+    ImGui::Text("flakes alive %u (drawn %u)", sim.flakes().alive, frame.flakes_drawn);
+    ImGui::Text("settled %.3f kg, airborne %.3f kg", static_cast<double>(m.settled) * unit_kg,
+                static_cast<double>(m.airborne) * unit_kg);
+    ImGui::Text("quality %s, camera %s, fog %s", info.quality.c_str(), info.camera_mode.c_str(),
+                info.fog_on ? "on" : "off");
+    if (ImGui::CollapsingHeader("ms per system", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const SystemStats& s : sim.schedule().stats()) {
+            ImGui::Text("%-13s %7.3f", s.name.c_str(),
+                        s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0);
+        }
+    }
+    if (ImGui::CollapsingHeader("ms per render pass")) {
+        for (const PassTiming& p : frame.passes) {
+            ImGui::Text("%-13s %7.3f%s", p.name.c_str(), p.cpu_ms, p.ran ? "" : " (skipped)");
+        }
+    }
+    if (!info.last_message.empty()) {
+        ImGui::TextUnformatted(info.last_message.c_str());
+    }
+    if (info.help) {
+        ImGui::Separator();
+        for (const KeyHelp& k : key_help()) {
+            ImGui::Text("%-14s %s", k.key, k.what);
+        }
+    }
+    ImGui::End();
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+} // namespace snow

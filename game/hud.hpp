@@ -1,0 +1,38 @@
+/// @file hud.hpp
+/// @brief The on-screen HUD of the windowed game (Dear ImGui): fps, flakes,
+/// settled mass, ms per system and per render pass, and the key list.
+#pragma once
+
+#include "render/frame_timings.hpp"
+#include "systems/simulation.hpp"
+
+#include <string>
+
+struct GLFWwindow;
+
+namespace snow {
+
+struct HudInfo {
+    float fps = 0.0f;
+    bool paused = false;
+    bool help = true;
+    bool fog_on = false;
+    std::string quality;
+    std::string camera_mode;
+    std::string last_message;
+};
+
+class Hud {
+  public:
+    /// Installs ImGui on the window (chains the app's GLFW callbacks).
+    explicit Hud(GLFWwindow* window);
+    ~Hud();
+    Hud(const Hud&) = delete;
+    Hud& operator=(const Hud&) = delete;
+
+    /// True while ImGui wants the mouse (the camera should not move).
+    [[nodiscard]] bool wants_mouse() const;
+    void draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& info);
+};
+
+} // namespace snow

@@ -1,0 +1,30 @@
+/// @file scene_accessor.hpp
+/// @brief Reads glTF accessors after checking every range ourselves: index,
+/// bufferView, buffer, component type, count, stride and offsets against the
+/// bytes actually loaded (internal to snow::scene; the cgltf/OSS-Fuzz habit).
+#pragma once
+
+#include "game/scene_error.hpp"
+
+#include <glm/vec3.hpp>
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Most elements one accessor may hold.
+inline constexpr std::size_t max_accessor_count = 1u << 24;
+
+/// Accessor `index` as finite float VEC3 values (POSITION, NORMAL).
+/// `field` names the referring property in errors. Throws SceneError.
+[[nodiscard]] std::vector<glm::vec3> read_vec3_accessor(const tinygltf::Model& model, int index,
+                                                        const std::string& field);
+
+/// Accessor `index` as unsigned SCALAR values (triangle indices).
+[[nodiscard]] std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& model,
+                                                             int index, const std::string& field);
+
+} // namespace snow

@@ -1,0 +1,193 @@
+// Scene creation. All simulation state goes through the Simulation facade
+// (which validates again and throws SnowError naming the field); the loader
+// adds only what the renderer reads: meshes, lights, camera, environment.
+#include "game/scene_build.hpp"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace snow {
+
+namespace {
+
+/// Runs a facade call; a SnowError becomes a SceneError prefixed with `prefix`.
+template <typename Fn>
+auto through_facade(const std::string& prefix, Fn&& fn) {
+    try {
+        return fn();
+    } catch (const SnowError& e) {
+        throw SceneError(prefix + e.what());
+    }
+}
+
+/// Rejects surfaces whose grid is too fine for their node, before any memory
+/// is spent on them; the facade's own checks handle the remaining values.
+void check_surface_cells(const SurfaceDef& d, const std::string& path, std::uint64_t& total) {
+    if (!(std::isfinite(d.cell) && d.cell > 0.0f)) {
+        return; // the facade names "surface.cell must be > 0"
+    }
+    const std::string field = path + ".surface.cell";
+    std::uint64_t cells = 1;
+    for (const float size : {d.size_x, d.size_z}) {
+        const double per_side = std::round(static_cast<double>(size) / d.cell);
+        if (per_side > max_surface_cells_per_side) {
+            scene_fail(field, "gives " + number_text(per_side) +
+                                  " cells per side over the node's " + number_text(size) +
+                                  " m wide top (at most " +
+                                  std::to_string(max_surface_cells_per_side) + ")");
+        }
+        cells *= static_cast<std::uint64_t>(std::max(per_side, 1.0));
+    }
+    total += cells;
+    if (total > max_scene_surface_cells) {
+        scene_fail(field, "brings the scene's surfaces to " + std::to_string(total) +
+                              " cells (at most " + std::to_string(max_scene_surface_cells) + ")");
+    }
+}
+
+Aabb default_bounds(const SceneGeometry& g, const Aabb& fallback) {
+    bool any = false;
+    Aabb b;
+    for (const WorldNode& n : g.nodes) {
+        if (n.primitives.empty()) {
+            continue;
+        }
+        b = any ? Aabb{glm::min(b.min, n.bounds.min), glm::max(b.max, n.bounds.max)} : n.bounds;
+        any = true;
+    }
+    if (!any) {
+        return fallback;
+    }
+    const float m = default_bounds_margin;
+    return {b.min - glm::vec3(m), b.max + glm::vec3(m, default_bounds_headroom, m)};
+}
+
+SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
+    SimConfig c = d.settings.config;
+    if (!d.settings.has_bounds) {
+        c.bounds = default_bounds(d.geometry, c.bounds);
+    }
+    if (o.seed) {
+        c.seed = *o.seed;
+    }
+    if (o.dt) {
+        c.dt = *o.dt;
+    }
+    if (o.threads) {
+        c.threads = *o.threads;
+    }
+    if (o.integrator) {
+        c.integrator = *o.integrator;
+    }
+    if (o.max_flakes) {
+        c.max_flakes = *o.max_flakes;
+    }
+    return c;
+}
+
+/// The node's collider, if it declares one; null otherwise.
+Entity add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
+    switch (kind) {
+    case ColliderKind::box:
+        return sim.add_box(node.bounds);
+    case ColliderKind::sphere: {
+        const glm::vec3 half = 0.5f * node.bounds.size();
+        return sim.add_sphere(0.5f * (node.bounds.min + node.bounds.max),
+                              std::max({half.x, half.y, half.z}));
+    }
+    case ColliderKind::mesh:
+        return sim.add_mesh_collider(node_triangles(node));
+    }
+    return null_entity;
+}
+
+void add_renderables(World& world, const WorldNode& node) {
+    for (std::size_t k = 0; k < node.primitives.size(); ++k) {
+        const WorldPrimitive& p = node.primitives[k];
+        MeshRenderable r;
+        r.name = k == 0 ? node.name : node.name + "#" + std::to_string(k);
+        r.positions = p.positions;
+        r.normals = p.normals;
+        r.indices = p.indices;
+        r.color = p.color;
+        world.add<MeshRenderable>(world.create(), std::move(r));
+    }
+}
+
+} // namespace
+
+SurfaceDef surface_over(const SurfaceDef& settings, const Aabb& bounds) {
+    SurfaceDef d = settings;
+    d.x0 = bounds.min.x;
+    d.z0 = bounds.min.z;
+    d.size_x = bounds.max.x - bounds.min.x;
+    d.size_z = bounds.max.z - bounds.min.z;
+    d.base_y =
+        bounds.max.y - std::max(0.0f, d.slope_x) * d.size_x - std::max(0.0f, d.slope_z) * d.size_z;
+    return d;
+}
+
+std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOverrides& o) {
+    // Check every surface before anything is allocated.
+    std::vector<std::optional<SurfaceDef>> surfaces(d.geometry.nodes.size());
+    std::uint64_t total_cells = 0;
+    for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
+        const WorldNode& node = d.geometry.nodes[i];
+        const NodeSnow& role = d.roles[i];
+        const std::string path = "nodes[" + std::to_string(node.index) + "].extras.snow";
+        if ((role.surface || role.collider) && node.primitives.empty()) {
+            scene_fail(path, "declares a surface or collider, but the node has no mesh");
+        }
+        if (role.surface) {
+            surfaces[i] = surface_over(*role.surface, node.bounds);
+            check_surface_cells(*surfaces[i], path, total_cells);
+        }
+    }
+
+    auto sim = through_facade("simulation settings (after command-line overrides): ",
+                              [&] { return std::make_unique<Simulation>(config_for(d, o)); });
+    World& world = sim->world();
+    for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
+        const WorldNode& node = d.geometry.nodes[i];
+        const NodeSnow& role = d.roles[i];
+        const std::string prefix = "nodes[" + std::to_string(node.index) + "].extras.snow.";
+        Entity owner = null_entity;
+        if (role.collider) {
+            owner = through_facade(prefix + "collider: ",
+                                   [&] { return add_collider(*sim, node, *role.collider); });
+        }
+        if (surfaces[i]) {
+            through_facade(prefix, [&] { return sim->add_surface(*surfaces[i], owner); });
+        }
+        add_renderables(world, node);
+        if (const auto& light = d.lights[i]) {
+            world.add<PointLight>(world.create(),
+                                  PointLight{node.position, light->color, light->intensity});
+        }
+    }
+
+    const SceneSnow& s = d.settings;
+    const std::string prefix = d.settings_path + ".";
+    if (s.emitter) {
+        through_facade(prefix, [&] { return sim->add_emitter(*s.emitter); });
+    }
+    if (s.wind) {
+        through_facade(prefix, [&] { sim->set_wind(*s.wind); });
+    }
+    if (s.fog) {
+        through_facade(prefix, [&] { sim->set_fog(*s.fog); });
+    }
+    if (s.occlusion) {
+        through_facade(prefix, [&] { sim->set_occlusion(*s.occlusion); });
+    }
+    if (s.spectral) {
+        through_facade(prefix, [&] { sim->set_spectral(*s.spectral); });
+    }
+    world.set_resource<CameraDef>(s.camera);
+    world.set_resource<Environment>(s.environment);
+    return sim;
+}
+
+} // namespace snow

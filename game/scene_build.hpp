@@ -1,0 +1,43 @@
+/// @file scene_build.hpp
+/// @brief Turns a read and validated scene into a Simulation, only through the
+/// facade (systems/simulation.hpp) plus the render-side components
+/// (internal to snow::scene).
+#pragma once
+
+#include "game/scene_geometry.hpp"
+#include "game/scene_loader.hpp"
+#include "game/scene_schema.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Most snow cells all surfaces of one scene may have together.
+inline constexpr std::uint64_t max_scene_surface_cells = 1u << 24;
+/// Default simulation bounds: the meshes' bounds grown by this much (m)
+/// sideways and below, and by `default_bounds_headroom` above (room to fall).
+inline constexpr float default_bounds_margin = 1.0f;
+inline constexpr float default_bounds_headroom = 4.0f;
+
+/// Everything read from one file, checked, ready to create.
+struct SceneDescription {
+    SceneGeometry geometry;
+    std::vector<NodeSnow> roles;                  ///< per geometry node
+    std::vector<std::optional<LightSpec>> lights; ///< per geometry node
+    SceneSnow settings;
+    std::string settings_path; ///< "scenes[i].extras.snow", prefixes facade errors
+};
+
+/// The rectangle and base plane of a node's surface: the top of `bounds`; a
+/// sloped plane touches the top of the bounds at its highest corner.
+[[nodiscard]] SurfaceDef surface_over(const SurfaceDef& settings, const Aabb& bounds);
+
+/// Creates the simulation. Facade errors (SnowError) come back as SceneError
+/// prefixed with the JSON path they belong to. Throws SceneError.
+[[nodiscard]] std::unique_ptr<Simulation> build_scene(const SceneDescription& d,
+                                                      const SceneOverrides& overrides);
+
+} // namespace snow

@@ -1,0 +1,323 @@
+// Scene instancing: node graph → world-space meshes. The graph is walked with
+// an explicit stack (no recursion for hostile depths) and a seen-mask, so a
+// cycle or a node with two parents is an error rather than a hang.
+#include "game/scene_geometry.hpp"
+
+#include "game/scene_accessor.hpp"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace snow {
+
+namespace {
+
+std::string index_name(const char* list, std::size_t i) {
+    return std::string(list) + "[" + std::to_string(i) + "]";
+}
+
+/// Running totals against the scene caps.
+struct Budget {
+    std::size_t primitives = 0, vertices = 0, indices = 0;
+};
+
+void charge(std::size_t& used, std::size_t add, std::size_t cap, const std::string& field,
+            const char* what) {
+    used += add;
+    if (used > cap) {
+        scene_fail(field, std::string("brings the scene over ") + std::to_string(cap) + " " + what);
+    }
+}
+
+void check_length(const std::vector<double>& v, std::size_t size, const std::string& field) {
+    if (!v.empty() && v.size() != size) {
+        scene_fail(field, "must have " + std::to_string(size) + " numbers (got " +
+                              std::to_string(v.size()) + ")");
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!std::isfinite(v[i])) {
+            scene_fail(field + "[" + std::to_string(i) + "]", "must be finite");
+        }
+    }
+}
+
+glm::dmat4 local_matrix(const tinygltf::Node& n, const std::string& at) {
+    check_length(n.matrix, 16, at + ".matrix");
+    check_length(n.translation, 3, at + ".translation");
+    check_length(n.rotation, 4, at + ".rotation");
+    check_length(n.scale, 3, at + ".scale");
+    if (!n.matrix.empty()) {
+        if (!n.translation.empty() || !n.rotation.empty() || !n.scale.empty()) {
+            scene_fail(at, "has both matrix and translation/rotation/scale (glTF allows one)");
+        }
+        glm::dmat4 m(1.0);
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                m[c][r] = n.matrix[static_cast<std::size_t>(c * 4 + r)]; // column-major
+            }
+        }
+        return m;
+    }
+    glm::dmat4 m(1.0);
+    if (!n.translation.empty()) {
+        m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (!n.rotation.empty()) {
+        // glTF stores (x, y, z, w); glm's constructor takes (w, x, y, z).
+        glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+        const double len = glm::length(q);
+        if (!(std::abs(len - 1.0) <= 0.01)) {
+            scene_fail(at + ".rotation",
+                       "must be a unit quaternion (length " + number_text(len) + ")");
+        }
+        m = m * glm::mat4_cast(q / len);
+    }
+    if (!n.scale.empty()) {
+        m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+    }
+    return m;
+}
+
+/// A double vector as float, or an error when it does not fit.
+glm::vec3 to_float3(const glm::dvec3& v, const std::string& field, const char* what) {
+    constexpr double limit = std::numeric_limits<float>::max();
+    for (int i = 0; i < 3; ++i) {
+        if (!(std::abs(v[i]) <= limit)) {
+            scene_fail(field,
+                       std::string(what) + " is not finite in float after the node transforms");
+        }
+    }
+    return glm::vec3(v);
+}
+
+glm::vec3 material_color(const tinygltf::Model& model, int material, const std::string& at) {
+    if (material < 0) {
+        return glm::vec3(1.0f);
+    }
+    if (static_cast<std::size_t>(material) >= model.materials.size()) {
+        scene_fail(at + ".material", "must name one of the file's " +
+                                         std::to_string(model.materials.size()) +
+                                         " materials (got " + std::to_string(material) + ")");
+    }
+    const std::string field = index_name("materials", static_cast<std::size_t>(material)) +
+                              ".pbrMetallicRoughness.baseColorFactor";
+    const auto& f =
+        model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
+    if (f.size() != 4) {
+        scene_fail(field, "must have 4 numbers (got " + std::to_string(f.size()) + ")");
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        if (!(f[i] >= 0.0 && f[i] <= 1.0)) {
+            scene_fail(field + "[" + std::to_string(i) + "]",
+                       "must be in [0, 1] (got " + number_text(f[i]) + ")");
+        }
+    }
+    return {static_cast<float>(f[0]), static_cast<float>(f[1]), static_cast<float>(f[2])};
+}
+
+/// Area-weighted vertex normals, for primitives that bring none.
+std::vector<glm::vec3> computed_normals(const WorldPrimitive& p) {
+    std::vector<glm::dvec3> sum(p.positions.size(), glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        const glm::dvec3 a(p.positions[p.indices[t]]);
+        const glm::dvec3 b(p.positions[p.indices[t + 1]]);
+        const glm::dvec3 c(p.positions[p.indices[t + 2]]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        for (std::size_t k = 0; k < 3; ++k) {
+            sum[p.indices[t + k]] += n;
+        }
+    }
+    std::vector<glm::vec3> out(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        const double len = glm::length(sum[i]);
+        // A vertex of only degenerate triangles has no direction: point it up.
+        out[i] = len > 0.0 && std::isfinite(len) ? glm::vec3(sum[i] / len) : glm::vec3(0, 1, 0);
+    }
+    return out;
+}
+
+WorldPrimitive world_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                               const std::string& at, const glm::dmat4& world, Budget& budget) {
+    if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        scene_fail(at + ".mode", "must be 4 (TRIANGLES) (got " + std::to_string(prim.mode) + ")");
+    }
+    const auto pos = prim.attributes.find("POSITION");
+    if (pos == prim.attributes.end()) {
+        scene_fail(at + ".attributes", "needs POSITION");
+    }
+    WorldPrimitive out;
+    out.positions = read_vec3_accessor(model, pos->second, at + ".attributes.POSITION");
+    const std::size_t n = out.positions.size();
+    charge(budget.vertices, n, max_scene_vertices, at, "vertices");
+    const auto nrm = prim.attributes.find("NORMAL");
+    if (nrm != prim.attributes.end()) {
+        out.normals = read_vec3_accessor(model, nrm->second, at + ".attributes.NORMAL");
+        if (out.normals.size() != n) {
+            scene_fail(at + ".attributes.NORMAL", "must have as many elements as POSITION (" +
+                                                      std::to_string(n) + ", got " +
+                                                      std::to_string(out.normals.size()) + ")");
+        }
+    }
+    if (prim.indices >= 0) {
+        out.indices = read_index_accessor(model, prim.indices, at + ".indices");
+        for (std::size_t i = 0; i < out.indices.size(); ++i) {
+            if (out.indices[i] >= n) {
+                scene_fail(at + ".indices", "element " + std::to_string(i) + " is " +
+                                                std::to_string(out.indices[i]) +
+                                                ", but there are " + std::to_string(n) +
+                                                " vertices");
+            }
+        }
+    } else {
+        out.indices.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            out.indices[i] = static_cast<std::uint32_t>(i);
+        }
+    }
+    if (out.indices.empty() || out.indices.size() % 3 != 0) {
+        scene_fail(at, "must have a positive multiple of 3 indices (got " +
+                           std::to_string(out.indices.size()) + ")");
+    }
+    charge(budget.indices, out.indices.size(), max_scene_indices, at, "indices");
+    out.color = material_color(model, prim.material, at);
+
+    const glm::dmat3 linear(world);
+    const double det = glm::determinant(linear);
+    if (!(std::isfinite(det) && det != 0.0)) {
+        scene_fail(at, "is placed by a singular or non-finite node transform (determinant " +
+                           number_text(det) + ")");
+    }
+    for (glm::vec3& p : out.positions) {
+        p = to_float3(glm::dvec3(world * glm::dvec4(glm::dvec3(p), 1.0)),
+                      at + ".attributes.POSITION", "a position");
+    }
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    for (std::size_t i = 0; i < out.normals.size(); ++i) {
+        const glm::dvec3 v = normal_matrix * glm::dvec3(out.normals[i]);
+        const double len = glm::length(v);
+        if (!(len > 0.0 && std::isfinite(len))) {
+            scene_fail(at + ".attributes.NORMAL",
+                       "element " + std::to_string(i) + " has zero or non-finite length");
+        }
+        out.normals[i] = glm::vec3(v / len);
+    }
+    if (det < 0.0) { // a mirroring transform: keep triangles counter-clockwise from outside
+        for (std::size_t t = 0; t < out.indices.size(); t += 3) {
+            std::swap(out.indices[t + 1], out.indices[t + 2]);
+        }
+    }
+    if (out.normals.empty()) {
+        out.normals = computed_normals(out);
+    }
+    return out;
+}
+
+void add_mesh(const tinygltf::Model& model, int mesh, const std::string& node_at,
+              const glm::dmat4& world, WorldNode& node, Budget& budget) {
+    if (static_cast<std::size_t>(mesh) >= model.meshes.size()) {
+        scene_fail(node_at + ".mesh", "must name one of the file's " +
+                                          std::to_string(model.meshes.size()) + " meshes (got " +
+                                          std::to_string(mesh) + ")");
+    }
+    const std::string mesh_at = index_name("meshes", static_cast<std::size_t>(mesh));
+    const auto& prims = model.meshes[static_cast<std::size_t>(mesh)].primitives;
+    if (prims.empty()) {
+        scene_fail(mesh_at + ".primitives", "must not be empty");
+    }
+    for (std::size_t k = 0; k < prims.size(); ++k) {
+        const std::string at = mesh_at + ".primitives[" + std::to_string(k) + "]";
+        charge(budget.primitives, 1, max_scene_primitives, at, "primitives");
+        node.primitives.push_back(world_primitive(model, prims[k], at, world, budget));
+    }
+    node.bounds = {node.primitives[0].positions[0], node.primitives[0].positions[0]};
+    for (const WorldPrimitive& p : node.primitives) {
+        for (const glm::vec3& v : p.positions) {
+            node.bounds.min = glm::min(node.bounds.min, v);
+            node.bounds.max = glm::max(node.bounds.max, v);
+        }
+    }
+}
+
+} // namespace
+
+SceneGeometry instance_scene(const tinygltf::Model& model) {
+    if (model.scenes.empty()) {
+        scene_fail("scenes", "must list at least one scene");
+    }
+    const int chosen = model.defaultScene < 0 ? 0 : model.defaultScene;
+    if (static_cast<std::size_t>(chosen) >= model.scenes.size()) {
+        scene_fail("scene", "must name one of the file's " + std::to_string(model.scenes.size()) +
+                                " scenes (got " + std::to_string(chosen) + ")");
+    }
+    if (model.nodes.size() > max_scene_nodes) {
+        scene_fail("nodes", "must have at most " + std::to_string(max_scene_nodes) +
+                                " entries (got " + std::to_string(model.nodes.size()) + ")");
+    }
+    SceneGeometry g;
+    g.scene_index = static_cast<std::size_t>(chosen);
+    const tinygltf::Scene& scene = model.scenes[g.scene_index];
+    g.scene_name = scene.name;
+
+    struct Pending {
+        int node;
+        glm::dmat4 parent;
+        std::string via; ///< the property that named this node, for errors
+    };
+    std::vector<Pending> stack;
+    const std::string roots = index_name("scenes", g.scene_index) + ".nodes";
+    for (std::size_t k = scene.nodes.size(); k-- > 0;) {
+        stack.push_back({scene.nodes[k], glm::dmat4(1.0), roots + "[" + std::to_string(k) + "]"});
+    }
+    std::vector<char> seen(model.nodes.size(), 0);
+    Budget budget;
+    while (!stack.empty()) {
+        const Pending item = std::move(stack.back());
+        stack.pop_back();
+        if (item.node < 0 || static_cast<std::size_t>(item.node) >= model.nodes.size()) {
+            scene_fail(item.via, "must name one of the file's " +
+                                     std::to_string(model.nodes.size()) + " nodes (got " +
+                                     std::to_string(item.node) + ")");
+        }
+        const auto i = static_cast<std::size_t>(item.node);
+        const std::string at = index_name("nodes", i);
+        if (seen[i] != 0) {
+            scene_fail(at, "is reached twice from the scene (a cycle, or a child of two parents)");
+        }
+        seen[i] = 1;
+        const tinygltf::Node& n = model.nodes[i];
+        const glm::dmat4 world = item.parent * local_matrix(n, at);
+        WorldNode node;
+        node.index = i;
+        node.name = n.name.empty() ? at : n.name;
+        node.position = to_float3(glm::dvec3(world[3]), at, "the origin");
+        if (n.mesh != -1) { // tinygltf's "absent"
+            add_mesh(model, n.mesh, at, world, node, budget);
+        }
+        g.nodes.push_back(std::move(node));
+        for (std::size_t k = n.children.size(); k-- > 0;) {
+            stack.push_back({n.children[k], world, at + ".children[" + std::to_string(k) + "]"});
+        }
+    }
+    return g;
+}
+
+std::vector<glm::vec3> node_triangles(const WorldNode& node) {
+    std::vector<glm::vec3> out;
+    for (const WorldPrimitive& p : node.primitives) {
+        for (const std::uint32_t i : p.indices) {
+            out.push_back(p.positions[i]);
+        }
+    }
+    return out;
+}
+
+} // namespace snow

@@ -1,0 +1,56 @@
+/// @file scene_geometry.hpp
+/// @brief Instances a glTF scene: walks the node graph from the scene's roots,
+/// composes transforms and turns every mesh primitive into world-space
+/// triangles (internal to snow::scene).
+#pragma once
+
+#include "systems/geometry.hpp"
+
+#include <glm/vec3.hpp>
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Caps on what one scene may instance (beyond them: an input error).
+inline constexpr std::size_t max_scene_nodes = 1u << 16;
+inline constexpr std::size_t max_scene_primitives = 1u << 16;
+inline constexpr std::size_t max_scene_vertices = 1u << 22;
+inline constexpr std::size_t max_scene_indices = 1u << 24;
+
+/// A mesh primitive in world space: triangles, unit normals per vertex.
+struct WorldPrimitive {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> indices; ///< 3 per triangle, counter-clockwise seen from outside
+    glm::vec3 color{1.0f};              ///< material baseColorFactor (glTF default white)
+};
+
+/// One node the scene instances, with its world transform applied.
+struct WorldNode {
+    std::size_t index = 0; ///< into the file's `nodes`
+    std::string name;
+    glm::vec3 position{0.0f};               ///< world-space origin (for lights)
+    std::vector<WorldPrimitive> primitives; ///< empty without a mesh
+    Aabb bounds;                            ///< of all primitives; meaningful when non-empty
+};
+
+/// The instanced scene, nodes in depth-first order (children in file order).
+struct SceneGeometry {
+    std::size_t scene_index = 0;
+    std::string scene_name;
+    std::vector<WorldNode> nodes;
+};
+
+/// Instances the file's default scene (`scene`, else scenes[0]). Rejects bad
+/// indices, cycles and shared children, malformed or non-finite transforms,
+/// non-triangle primitives and anything over the caps. Throws SceneError.
+[[nodiscard]] SceneGeometry instance_scene(const tinygltf::Model& model);
+
+/// All triangles of a node, three world-space vertices each (mesh colliders).
+[[nodiscard]] std::vector<glm::vec3> node_triangles(const WorldNode& node);
+
+} // namespace snow

@@ -1,0 +1,51 @@
+/// @file scene_loader.hpp
+/// @brief Loads a glTF 2.0 scene whose `extras.snow` objects declare what the
+/// simulation does with each node (docs/scenes.md). The one public header of
+/// snow::scene; the scene_*.hpp files beside it are internals.
+#pragma once
+
+#include "systems/simulation.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace snow {
+
+/// Values that replace the scene's own `simulation` settings (command line).
+struct SceneOverrides {
+    std::optional<std::uint64_t> seed;
+    std::optional<float> dt;
+    std::optional<unsigned> threads;
+    std::optional<Integrator> integrator;
+    std::optional<std::uint32_t> max_flakes;
+};
+
+/// Either a ready simulation (sim set, error empty) or one error naming the
+/// file and the field (sim null). Never a partly built scene.
+struct SceneLoadResult {
+    std::unique_ptr<Simulation> sim;
+    std::string error;
+    std::string name; ///< the glTF scene's name, else the file's stem
+};
+
+/// Largest .gltf text accepted (bytes); larger files are rejected before parsing.
+inline constexpr std::size_t max_scene_bytes = 64u << 20;
+/// Largest total size of the external and embedded buffers of one scene (bytes).
+inline constexpr std::size_t max_scene_buffer_bytes = 256u << 20;
+
+/// Loads a .gltf file; buffers may only come from data URIs or files inside
+/// the file's own folder.
+[[nodiscard]] SceneLoadResult load_scene_file(const std::string& path,
+                                              const SceneOverrides& overrides = {});
+
+/// Loads glTF JSON text from memory; only data-URI buffers are allowed.
+/// `name_for_errors` prefixes every error message.
+[[nodiscard]] SceneLoadResult load_scene_memory(std::string_view gltf_json,
+                                                std::string_view name_for_errors,
+                                                const SceneOverrides& overrides = {});
+
+} // namespace snow

@@ -1,0 +1,95 @@
+// snow_game: the playable snow scene (window), or a headless render to PNGs.
+#include "game/cli_args.hpp"
+#include "game/game_app.hpp"
+#include "game/quality.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+constexpr const char* usage = R"(usage: snow_game [options]
+  --scene FILE        glTF scene (default: the built-in village scene)
+  --headless          render without a window (OSMesa) to PNG frames
+  --frames N          stop after N frames (headless default 120)
+  --out DIR           headless: folder for the PNG frames (default out/frames)
+  --seconds S         stop after S seconds of wall time
+  --size WxH          window / image size (default 1280x720)
+  --quality NAME      low | medium | high (default medium)
+  --warmup N          simulate N ticks before the first frame
+  --seed S            random seed (default: the scene's)
+  --threads T         simulation threads (default: the scene's)
+  --inject LIST       scripted keys, e.g. "10:P,20:N,40:ESC" (frame:key)
+  --video             headless: also encode DIR/snow.mp4 if ffmpeg is installed
+  --help              this text
+In the window press H for the key list.
+)";
+
+snow::GameOptions parse(int argc, char** argv) {
+    using namespace snow::cli;
+    snow::GameOptions o;
+    ArgReader args(argc, argv);
+    while (args.next()) {
+        const std::string_view f = args.flag();
+        if (f == "--help" || f == "-h") {
+            std::fputs(usage, stdout);
+            std::exit(0);
+        } else if (f == "--scene") {
+            o.scene = std::string(args.value());
+        } else if (f == "--headless") {
+            o.headless = true;
+        } else if (f == "--frames") {
+            o.frames = parse_uint(f, args.value(), 1, 10'000'000);
+        } else if (f == "--out") {
+            o.out_dir = std::string(args.value());
+        } else if (f == "--seconds") {
+            o.seconds = parse_positive(f, args.value(), 1.0e7);
+        } else if (f == "--size") {
+            const std::string_view v = args.value();
+            const std::size_t x = v.find('x');
+            if (x == std::string_view::npos) {
+                throw UsageError{"--size: expected WxH, e.g. 1280x720, got '" + std::string(v) + "'"};
+            }
+            o.width = static_cast<int>(parse_uint(f, v.substr(0, x), 16, 8192));
+            o.height = static_cast<int>(parse_uint(f, v.substr(x + 1), 16, 8192));
+        } else if (f == "--quality") {
+            const std::string_view q = args.value();
+            const auto i = snow::find_quality(q);
+            if (!i) {
+                throw UsageError{"--quality: expected low, medium or high, got '" + std::string(q) + "'"};
+            }
+            o.quality = *i;
+        } else if (f == "--warmup") {
+            o.warmup_ticks = parse_uint(f, args.value(), 0, 100'000'000);
+        } else if (f == "--seed") {
+            o.overrides.seed = parse_uint(f, args.value(), 0, ~0ull);
+        } else if (f == "--threads") {
+            o.overrides.threads = static_cast<unsigned>(parse_uint(f, args.value(), 1, 256));
+        } else if (f == "--inject") {
+            try {
+                o.inject = snow::parse_injected_keys(args.value());
+            } catch (const std::invalid_argument& e) {
+                throw UsageError{e.what()};
+            }
+        } else if (f == "--video") {
+            o.video = true;
+        } else {
+            args.unknown();
+        }
+    }
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    snow::GameOptions options;
+    try {
+        options = parse(argc, argv);
+    } catch (const snow::cli::UsageError& e) {
+        std::fprintf(stderr, "snow_game: %s\n", e.message.c_str());
+        return 2;
+    }
+    return snow::run_game(options);
+}

@@ -1,0 +1,343 @@
+#!/usr/bin/env python3
+"""Writes the project's glTF scenes to assets/scenes/ (docs/scenes.md).
+
+    python3 scripts/make_assets.py [--check]
+
+Standard library only. Output is deterministic: running it again rewrites
+the same bytes (--check exits 1 if a file would change). Scenes:
+
+  village.gltf          seed 002's test scene: ground, a house with a pitched
+                        roof (two sloped mesh colliders with sloped surfaces),
+                        a porch roof under its lee eave, a flat-roofed garage,
+                        a fence, a three-sphere snowman, three coloured point
+                        lights (white above the house, blue nearer the camera,
+                        yellow on the right; seed 002 section 5), steady wind
+                        along +x, exponential fog, an occlusion camera.
+  village_effects.gltf  the village plus the spectral far-field layer, gusts
+                        and layered fog with a puff.
+  minimal.gltf          ground and an emitter only: no wind, fog, occlusion or
+                        spectral layer, default bounds.
+"""
+
+import base64
+import json
+import math
+import struct
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT_DIR = ROOT / "assets" / "scenes"
+
+FLOAT = 5126
+UNSIGNED_SHORT = 5123
+UNSIGNED_INT = 5125
+ARRAY_BUFFER = 34962
+ELEMENT_ARRAY_BUFFER = 34963
+
+
+def f32(x):
+    """x rounded to float32, as the buffer stores it."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def normalized(v):
+    n = math.sqrt(sum(c * c for c in v))
+    return [c / n for c in v]
+
+
+def hexahedron(c):
+    """Flat-shaded six-sided solid from 8 corners indexed by bits (x, y, z):
+    corner k has x-side k & 1, y-side (k >> 1) & 1, z-side (k >> 2) & 1.
+    Faces are wound counter-clockwise seen from outside."""
+    faces = [
+        (0, 4, 6, 2),  # -x
+        (1, 3, 7, 5),  # +x
+        (0, 1, 5, 4),  # -y
+        (2, 6, 7, 3),  # +y
+        (0, 2, 3, 1),  # -z
+        (4, 5, 7, 6),  # +z
+    ]
+    positions, normals, indices = [], [], []
+    for quad in faces:
+        p = [c[k] for k in quad]
+        n = normalized(cross(sub(p[1], p[0]), sub(p[2], p[0])))
+        base = len(positions)
+        positions += p
+        normals += [n] * 4
+        indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+    return positions, normals, indices
+
+
+def unit_box():
+    """The cube [-0.5, 0.5]^3; nodes scale and place it."""
+    return hexahedron([[(k & 1) - 0.5, ((k >> 1) & 1) - 0.5, ((k >> 2) & 1) - 0.5]
+                       for k in range(8)])
+
+
+def roof_slab(x_low, x_high, z0, z1, top_at, thickness):
+    """A roof side: top plane y = top_at(x), vertical thickness, spanning
+    x_low..x_high and z0..z1."""
+    corners = []
+    for k in range(8):
+        x = x_high if k & 1 else x_low
+        z = z1 if (k >> 2) & 1 else z0
+        y = top_at(x) - (0.0 if (k >> 1) & 1 else thickness)
+        corners.append([x, y, z])
+    return hexahedron(corners)
+
+
+def unit_sphere(rings=8, segments=12):
+    """UV sphere of radius 1, smooth normals; its bounds are exactly [-1, 1]^3
+    (segments divisible by 4), so a sphere collider recovers the radius."""
+    positions, indices = [], []
+    for r in range(rings + 1):
+        theta = math.pi * r / rings
+        for s in range(segments + 1):
+            phi = 2.0 * math.pi * s / segments
+            positions.append([round(math.sin(theta) * math.cos(phi), 9),
+                              round(math.cos(theta), 9),
+                              round(-math.sin(theta) * math.sin(phi), 9)])
+    row = segments + 1
+    for r in range(rings):
+        for s in range(segments):
+            a, b = r * row + s, (r + 1) * row + s
+            if r != 0:
+                indices += [a, b, a + 1]
+            if r != rings - 1:
+                indices += [a + 1, b, b + 1]
+    return positions, [list(p) for p in positions], indices
+
+
+class Gltf:
+    """Accumulates one glTF document with a single embedded buffer."""
+
+    def __init__(self):
+        self.bin = bytearray()
+        self.views, self.accessors, self.materials, self.meshes, self.nodes = [], [], [], [], []
+
+    def _view(self, data, target):
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        self.views.append({"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data),
+                           "target": target})
+        self.bin += data
+        return len(self.views) - 1
+
+    def _vec3(self, values):
+        flat = [c for v in values for c in v]
+        view = self._view(struct.pack("<%df" % len(flat), *flat), ARRAY_BUFFER)
+        rounded = [[f32(c) for c in v] for v in values]
+        self.accessors.append({
+            "bufferView": view, "componentType": FLOAT, "count": len(values), "type": "VEC3",
+            "min": [min(v[i] for v in rounded) for i in range(3)],
+            "max": [max(v[i] for v in rounded) for i in range(3)]})
+        return len(self.accessors) - 1
+
+    def _indices(self, values):
+        wide = max(values) > 0xFFFF
+        data = struct.pack("<%d%s" % (len(values), "I" if wide else "H"), *values)
+        view = self._view(data, ELEMENT_ARRAY_BUFFER)
+        self.accessors.append({"bufferView": view,
+                               "componentType": UNSIGNED_INT if wide else UNSIGNED_SHORT,
+                               "count": len(values), "type": "SCALAR"})
+        return len(self.accessors) - 1
+
+    def geometry(self, shape):
+        """Accessors (POSITION, NORMAL, indices) of a (positions, normals, indices) shape."""
+        positions, normals, indices = shape
+        return self._vec3(positions), self._vec3(normals), self._indices(indices)
+
+    def material(self, name, rgb):
+        self.materials.append({"name": name, "pbrMetallicRoughness": {
+            "baseColorFactor": list(rgb) + [1.0], "metallicFactor": 0.0, "roughnessFactor": 0.9}})
+        return len(self.materials) - 1
+
+    def mesh(self, name, geometry, material):
+        pos, nrm, idx = geometry
+        self.meshes.append({"name": name, "primitives": [{
+            "attributes": {"POSITION": pos, "NORMAL": nrm}, "indices": idx,
+            "material": material}]})
+        return len(self.meshes) - 1
+
+    def node(self, name, mesh=None, translation=None, rotation=None, scale=None,
+             children=None, snow=None, light=None):
+        n = {"name": name}
+        for key, value in (("mesh", mesh), ("translation", translation),
+                           ("rotation", rotation), ("scale", scale), ("children", children)):
+            if value is not None:
+                n[key] = value
+        if snow is not None:
+            n["extras"] = {"snow": snow}
+        if light is not None:
+            n["extensions"] = {"KHR_lights_punctual": {"light": light}}
+        self.nodes.append(n)
+        return len(self.nodes) - 1
+
+    def document(self, scene_name, roots, scene_snow, lights=None):
+        doc = {"asset": {"version": "2.0", "generator": "snow scripts/make_assets.py"}}
+        if lights:
+            doc["extensionsUsed"] = ["KHR_lights_punctual"]
+            doc["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
+        doc.update({
+            "scene": 0,
+            "scenes": [{"name": scene_name, "nodes": roots, "extras": {"snow": scene_snow}}],
+            "nodes": self.nodes,
+            "meshes": self.meshes,
+            "materials": self.materials,
+            "accessors": self.accessors,
+            "bufferViews": self.views,
+            "buffers": [{"byteLength": len(self.bin),
+                         "uri": "data:application/octet-stream;base64," +
+                                base64.b64encode(bytes(self.bin)).decode("ascii")}],
+        })
+        return doc
+
+
+def point_light(name, rgb, intensity):
+    return {"name": name, "type": "point", "color": list(rgb), "intensity": intensity}
+
+
+# --- the scenes ---------------------------------------------------------------
+
+DT = 1.0 / 60.0
+GROUND = {"surface": {"cell": 0.1, "edge_limit": 0.1, "spills": False}}
+EMITTER = {"rate": 3000.0, "mass_min_g": 0.005, "mass_max_g": 5.0, "size_min": 0.002,
+           "size_max": 0.0254, "fall_speed_min": 0.5, "fall_speed_max": 1.5}
+CAMERA = {"position": [1.0, 6.0, 17.0], "target": [0.0, 1.5, -1.0], "fov_y_deg": 50.0,
+          "near_plane": 0.05, "far_plane": 200.0}
+ENVIRONMENT = {"ambient": [0.18, 0.2, 0.24], "sky": [0.55, 0.62, 0.7]}
+
+# House (node frame): walls x -2.5..2.5, z -2..2, 3 m high; the ridge runs
+# along z at x = 0, 4.6 m high; eaves overhang 0.4 m; roof top slope 0.58.
+RIDGE_Y, ROOF_SLOPE, EAVE, ROOF_T = 4.6, 0.58, 2.9, 0.15
+
+
+def village(effects):
+    g = Gltf()
+    box = g.geometry(unit_box())
+    sphere = g.geometry(unit_sphere())
+    left = g.geometry(roof_slab(-EAVE, 0.0, -2.4, 2.4, lambda x: RIDGE_Y + ROOF_SLOPE * x, ROOF_T))
+    right = g.geometry(roof_slab(0.0, EAVE, -2.4, 2.4, lambda x: RIDGE_Y - ROOF_SLOPE * x, ROOF_T))
+    m_ground = g.material("frozen ground", (0.42, 0.4, 0.36))
+    m_wall = g.material("brick", (0.55, 0.25, 0.2))
+    m_roof = g.material("slate", (0.3, 0.3, 0.35))
+    m_garage = g.material("plaster", (0.62, 0.6, 0.55))
+    m_wood = g.material("wood", (0.45, 0.32, 0.2))
+    m_snowman = g.material("snowman", (0.95, 0.95, 0.97))
+
+    roof_cell = {"cell": 0.1, "edge_limit": 0.08}
+    ground = g.node("ground", g.mesh("ground", box, m_ground), translation=[0.0, -0.1, 0.0],
+                    scale=[20.0, 0.2, 20.0], snow=GROUND)
+    walls = g.node("house walls", g.mesh("walls", box, m_wall), translation=[0.0, 1.5, 0.0],
+                   scale=[5.0, 3.0, 4.0], snow={"collider": "box"})
+    roof_l = g.node("roof west", g.mesh("roof west", left, m_roof),
+                    snow={"collider": "mesh", "surface": dict(roof_cell, slope_x=ROOF_SLOPE)})
+    roof_r = g.node("roof east", g.mesh("roof east", right, m_roof),
+                    snow={"collider": "mesh", "surface": dict(roof_cell, slope_x=-ROOF_SLOPE)})
+    house = g.node("house", translation=[-3.0, 0.0, -1.0], children=[walls, roof_l, roof_r])
+    # Under the east (lee) eave, which ends at x = -0.1: receives the roof's spill.
+    porch = g.node("porch roof", g.mesh("porch roof", box, m_wood),
+                   translation=[0.575, 2.075, -1.0], scale=[2.05, 0.15, 2.4],
+                   snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.06}})
+    posts = [g.node("porch post %d" % i, g.mesh("porch post", box, m_wood),
+                    translation=[1.5, 1.0, z], scale=[0.1, 2.0, 0.1])
+             for i, z in enumerate((-2.1, 0.1))]
+    garage = g.node("garage", g.mesh("garage", box, m_garage), translation=[5.0, 1.25, -1.5],
+                    scale=[4.0, 2.5, 3.0],
+                    snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.05}})
+    # Rotated a quarter turn about y: 10 m long along z, upwind of everything.
+    fence = g.node("fence", g.mesh("fence", box, m_wood), translation=[-8.0, 0.5, -1.0],
+                   rotation=[0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5)], scale=[10.0, 1.0, 0.1],
+                   snow={"collider": "box"})
+    balls = [g.node("snowman %s" % part, g.mesh("snowman " + part, sphere, m_snowman),
+                    translation=[0.0, y, 0.0], scale=[r, r, r], snow={"collider": "sphere"})
+             for part, y, r in (("base", 0.6, 0.6), ("body", 1.5, 0.42), ("head", 2.12, 0.28))]
+    snowman = g.node("snowman", translation=[2.0, 0.0, 4.0], children=balls)
+    lights = [point_light("white", (1.0, 1.0, 1.0), 1.0),
+              point_light("blue", (0.35, 0.5, 1.0), 0.6),
+              point_light("yellow", (1.0, 0.85, 0.35), 0.7)]
+    lamps = [g.node("white light", translation=[-3.0, 9.0, -1.0], light=0),
+             g.node("blue light", translation=[-1.0, 5.0, 7.0], light=1),
+             g.node("yellow light", translation=[9.0, 5.0, 1.0], light=2)]
+
+    wind = {"base": [2.0, 0.0, 0.0], "walk": 0.2, "max_deviation": 0.8}
+    fog = {"mode": "exponential", "color": [0.75, 0.78, 0.82], "density": 0.02}
+    if effects:
+        wind.update({"gust_strength": 3.0, "gust_rate": 0.1, "gust_duration": 1.5})
+        fog = {"mode": "layered", "color": [0.78, 0.8, 0.84], "layer_bottom": 0.0,
+               "layer_top": 3.0, "layer_density": 0.12,
+               "puffs": [{"center": [4.0, 1.0, 3.0], "sigma": 1.5, "density": 0.3}]}
+    snow = {
+        "simulation": {"dt": DT, "seed": 2, "max_flakes": 50000, "integrator": "euler",
+                       "threads": 1, "bounds": {"min": [-10.0, -0.5, -10.0],
+                                                "max": [10.0, 12.0, 10.0]}},
+        "emitter": EMITTER,
+        "wind": wind,
+        "fog": fog,
+        "occlusion": {"resolution": 256, "tilt": 0.25},
+    }
+    if effects:
+        snow["spectral"] = {"size_xy": 64, "size_t": 32, "speed": 1.0, "band_low": 4.0,
+                            "band_high": 16.0, "opacity": 0.5, "start_distance": 25.0}
+    snow["camera"] = CAMERA
+    snow["environment"] = ENVIRONMENT
+    roots = [ground, house, porch] + posts + [garage, fence, snowman] + lamps
+    return g.document("village effects" if effects else "village", roots, snow, lights)
+
+
+def minimal():
+    g = Gltf()
+    ground = g.node("ground", g.mesh("ground", g.geometry(unit_box()),
+                                     g.material("ground", (0.42, 0.4, 0.36))),
+                    translation=[0.0, -0.1, 0.0], scale=[10.0, 0.2, 10.0], snow=GROUND)
+    snow = {"simulation": {"dt": DT, "seed": 1, "max_flakes": 5000},
+            "emitter": dict(EMITTER, rate=1000.0)}
+    return g.document("minimal", [ground], snow)
+
+
+def render(value, depth=0):
+    """JSON with objects one key per line and arrays of plain values on one line."""
+    pad, inner = " " * depth, " " * (depth + 1)
+    if isinstance(value, dict):
+        items = [inner + json.dumps(k) + ": " + render(v, depth + 1) for k, v in value.items()]
+        return "{\n" + ",\n".join(items) + "\n" + pad + "}"
+    if isinstance(value, list) and any(isinstance(v, (dict, list)) for v in value):
+        return "[\n" + ",\n".join(inner + render(v, depth + 1) for v in value) + "\n" + pad + "]"
+    if isinstance(value, list):
+        return "[" + ", ".join(json.dumps(v) for v in value) + "]"
+    return json.dumps(value)
+
+
+def main(argv):
+    check = "--check" in argv[1:]
+    scenes = {"village.gltf": village(False), "village_effects.gltf": village(True),
+              "minimal.gltf": minimal()}
+    OUT_DIR.mkdir(parents=True, exist_ok=True)
+    stale = []
+    for name, doc in scenes.items():
+        path = OUT_DIR / name
+        text = render(doc) + "\n"
+        if path.exists() and path.read_text(encoding="ascii") == text:
+            continue
+        stale.append(name)
+        if not check:
+            path.write_text(text, encoding="ascii")
+    if check and stale:
+        print("make_assets: out of date: " + ", ".join(stale), file=sys.stderr)
+        return 1
+    for name in stale:
+        print("make_assets: wrote assets/scenes/" + name)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
