@@ -234,7 +234,7 @@ def village(effects):
     m_wood = g.material("wood", (0.45, 0.32, 0.2))
     m_snowman = g.material("snowman", (0.95, 0.95, 0.97))
 
-    roof_cell = {"cell": 0.1, "edge_limit": 0.08}
+    roof_cell = {"cell": 0.1, "edge_limit": 0.005}
     ground = g.node("ground", g.mesh("ground", box, m_ground), translation=[0.0, -0.1, 0.0],
                     scale=[20.0, 0.2, 20.0], snow=GROUND)
     walls = g.node("house walls", g.mesh("walls", box, m_wall), translation=[0.0, 1.5, 0.0],
@@ -247,13 +247,13 @@ def village(effects):
     # Under the east (lee) eave, which ends at x = -0.1: receives the roof's spill.
     porch = g.node("porch roof", g.mesh("porch roof", box, m_wood),
                    translation=[0.575, 2.075, -1.0], scale=[2.05, 0.15, 2.4],
-                   snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.06}})
+                   snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.01}})
     posts = [g.node("porch post %d" % i, g.mesh("porch post", box, m_wood),
                     translation=[1.5, 1.0, z], scale=[0.1, 2.0, 0.1])
              for i, z in enumerate((-2.1, 0.1))]
     garage = g.node("garage", g.mesh("garage", box, m_garage), translation=[5.0, 1.25, -1.5],
                     scale=[4.0, 2.5, 3.0],
-                    snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.05}})
+                    snow={"collider": "box", "surface": {"cell": 0.1, "edge_limit": 0.01}})
     # Rotated a quarter turn about y: 10 m long along z, upwind of everything.
     fence = g.node("fence", g.mesh("fence", box, m_wood), translation=[-8.0, 0.5, -1.0],
                    rotation=[0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5)], scale=[10.0, 1.0, 0.1],
