@@ -120,6 +120,10 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
+    // Flakes meet meshes only through the sky map (seed 004): a mesh needs one.
+    if (!world_.has_resource<OcclusionCamera>()) {
+        world_.set_resource<OcclusionCamera>();
+    }
     bump_geometry();
     return id;
 }

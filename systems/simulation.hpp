@@ -53,6 +53,9 @@ class Simulation {
     Entity add_surface(const SurfaceDef& def, Entity owner = null_entity);
     Entity add_box(const Aabb& box);
     Entity add_sphere(const glm::vec3& center, float radius);
+    /// A triangle mesh (3 vertices each). Adds a default OcclusionCamera if
+    /// there is none: flakes meet meshes through its map, which refreshes at
+    /// the end of each tick in which geometry changed.
     Entity add_mesh_collider(std::vector<glm::vec3> triangles);
     void set_occlusion(const OcclusionCamera& cam);
     void set_fog(const Fog& fog);

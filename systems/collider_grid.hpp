@@ -1,0 +1,94 @@
+/// @file collider_grid.hpp
+/// @brief A uniform XZ grid over the simulation bounds that lists the box and
+/// sphere colliders overlapping each cell, so a flake is tested only against
+/// the colliders near it (the cell index seed 002 §8 proposes). Rebuilt from
+/// the World whenever GeometryVersion changes; it is a World resource so the
+/// cache lives and dies with its World.
+#pragma once
+
+#include "ecs/entity.hpp"
+#include "ecs/world.hpp"
+#include "systems/geometry.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace snow {
+
+/// A box collider as the collision pass reads it.
+struct GridBox {
+    Aabb box;
+    std::uint32_t entity = 0;     ///< Entity::bits of the collider
+    std::uint32_t surf_begin = 0; ///< its surfaces: holder_surfaces[surf_begin, surf_end)
+    std::uint32_t surf_end = 0;   ///< empty unless the entity has SnowHolder
+};
+
+/// A sphere collider as the collision pass reads it.
+struct GridSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+
+/// A mesh collider: only its identity and surfaces (its shape lives in the occlusion map).
+struct GridMesh {
+    std::uint32_t entity = 0;
+    std::uint32_t surf_begin = 0;
+    std::uint32_t surf_end = 0;
+};
+
+/// World resource. Cells are as fine as min_cell_size allows (at most
+/// max_cells_per_side per axis). Cell lists are compressed rows: the items of
+/// cell c are cell_items[cell_start[c], cell_start[c + 1]); an item is a box
+/// index, or a sphere index with sphere_tag set. Spheres come first in each cell.
+struct ColliderGrid {
+    static constexpr std::uint32_t sphere_tag = 0x80000000u;
+    static constexpr std::uint32_t max_cells_per_side = 256;
+    static constexpr float min_cell_size = 0.25f; ///< m; smaller cells flag too many flakes as fast
+
+    bool built = false;
+    std::uint64_t geometry_version = 0; ///< GeometryVersion::version it was built from
+    Aabb bounds;                        ///< SimConfig::bounds it was built over
+    float x0 = 0.0f, z0 = 0.0f;
+    float inv_cell_x = 1.0f, inv_cell_z = 1.0f;   ///< cells per metre
+    float cell_size_x = 1.0f, cell_size_z = 1.0f; ///< m
+    std::uint32_t nx = 1, nz = 1;
+    std::vector<std::uint32_t> cell_start; ///< nx·nz + 1 offsets
+    std::vector<std::uint32_t> cell_items;
+    std::vector<float> cell_top; ///< highest box/sphere top over the cell (-inf if none)
+    /// Highest top of any collider (mesh triangles and mesh surfaces included)
+    /// over the cell or its 8 neighbours: a flake that moves less than a cell
+    /// per tick and stays above this meets nothing.
+    std::vector<float> cell_reach;
+    std::vector<float> cell_mesh_reach; ///< the same for mesh tops alone
+    std::vector<GridBox> boxes;
+    std::vector<GridSphere> spheres;
+    std::vector<GridMesh> meshes;        ///< sorted by entity bits (looked up from top_id)
+    std::vector<Entity> holder_surfaces; ///< surface entities, grouped by owner
+
+    /// Cell column of world x, clamped into the grid (NaN gives 0).
+    [[nodiscard]] std::uint32_t cell_x(float x) const {
+        return clamp_cell((x - x0) * inv_cell_x, nx);
+    }
+    /// Cell row of world z, clamped into the grid (NaN gives 0).
+    [[nodiscard]] std::uint32_t cell_z(float z) const {
+        return clamp_cell((z - z0) * inv_cell_z, nz);
+    }
+    /// The mesh whose entity bits are `id`, or nullptr.
+    [[nodiscard]] const GridMesh* find_mesh(std::uint32_t id) const;
+
+  private:
+    // Branch-free (selects only) so the collision pre-pass vectorises.
+    [[nodiscard]] static std::uint32_t clamp_cell(float u, std::uint32_t n) {
+        const float last = static_cast<float>(n - 1);
+        u = u > 0.0f ? u : 0.0f; // NaN compares false: cell 0
+        u = u < last ? u : last;
+        return static_cast<std::uint32_t>(static_cast<std::int32_t>(u));
+    }
+};
+
+/// Returns the World's ColliderGrid (created if missing), rebuilt first if
+/// GeometryVersion or SimConfig::bounds changed since it was built. Colliders
+/// with non-finite numbers are left out.
+ColliderGrid& update_collider_grid(World& w);
+
+} // namespace snow
