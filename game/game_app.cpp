@@ -322,6 +322,9 @@ int Game::run() {
             pending_.pop_front();
             apply(a);
         }
+        if (quit_) {
+            break;
+        }
         if (window_) {
             read_window_input(static_cast<float>(seconds));
         }

@@ -1,0 +1,40 @@
+// mesh.frag: lit scene meshes, whitened where snow reaches them (seed 004):
+// incline coefficient dot(N, up) times exposure to the sky from the occlusion map.
+in vec3 v_world;
+in vec3 v_normal;
+out vec4 frag_color;
+uniform vec3 albedo;
+
+#ifdef OCCLUSION
+uniform sampler2D occlusion_map; // r: highest geometry y per texel
+float exposed(ivec2 t, float y) {
+    if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, counts.yz))) {
+        return 1.0; // outside the map nothing covers the sky
+    }
+    return y >= texelFetch(occlusion_map, t, 0).r - occlusion.w ? 1.0 : 0.0;
+}
+// Like a shadow-map test (seed 004 step 2), filtered over the 4 nearest texels.
+float sky_exposure(vec3 p) {
+    vec2 t = (p.xz + occlusion_shear.xy * p.y - occlusion.xy) * occlusion.z - 0.5;
+    ivec2 i = ivec2(floor(t));
+    vec2 f = t - vec2(i);
+    float e00 = exposed(i, p.y);
+    float e10 = exposed(i + ivec2(1, 0), p.y);
+    float e01 = exposed(i + ivec2(0, 1), p.y);
+    float e11 = exposed(i + ivec2(1, 1), p.y);
+    return mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
+}
+#else
+float sky_exposure(vec3 p) { return 1.0; }
+#endif
+
+void main() {
+    vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
+    float incline = clamp(n.y, 0.0, 1.0); // seed 004 step 3
+    float cover = incline * sky_exposure(v_world) * snow_color.w;
+    vec3 color = mix(albedo, snow_color.rgb, cover) * irradiance(n, v_world);
+#ifdef FOG
+    color = apply_fog(color, v_world);
+#endif
+    frag_color = vec4(color, 1.0);
+}

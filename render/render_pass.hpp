@@ -1,0 +1,52 @@
+/// @file render_pass.hpp
+/// @brief One step of a frame. The Renderer runs its passes in a fixed list;
+/// a pass whose content the world lacks is skipped and costs nothing.
+#pragma once
+
+#include "ecs/world.hpp"
+#include "render/camera.hpp"
+#include "render/frame_timings.hpp"
+#include "render/render_settings.hpp"
+#include "render/shader.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace snow {
+
+/// What every pass of one frame shares. The "Frame" uniform block is bound,
+/// the shared textures are bound to their units (texture_unit) and the depth
+/// buffer holds the opaque passes that ran before.
+struct FrameContext {
+    const ViewCamera& camera;
+    glm::mat4 view_proj;
+    glm::ivec2 viewport;
+    const RenderSettings& settings;
+    ProgramCache& programs;
+    /// Shader defines of the world's fog ("FOG", "FOG_LAYERED", ...); empty
+    /// without a Fog resource, so no fog variant is compiled or run.
+    std::vector<std::string> fog_defines;
+    bool occlusion = false;   ///< an OcclusionMap is bound to texture_unit::occlusion
+    bool software_gl = false; ///< llvmpipe/softpipe: passes may trade detail for speed
+    FrameTimings& stats;      ///< passes add their counters
+};
+
+/// Interface of a pass. Built-in order (Renderer::pass_names()):
+/// "sky" → "snow_surfaces" → "meshes" → "flakes"; far-field snow (seed 000) goes
+/// before "flakes" and fog puffs (seed 001) after it, via Renderer::insert_pass.
+class RenderPass {
+  public:
+    virtual ~RenderPass() = default;
+    /// Stable name, used in timings and by insert_pass.
+    [[nodiscard]] virtual std::string_view name() const = 0;
+    /// True if the world has something for this pass to draw.
+    [[nodiscard]] virtual bool wanted(const World& world) const = 0;
+    /// Reads the world (never writes it), uploads what changed, draws.
+    virtual void run(const World& world, FrameContext& frame) = 0;
+};
+
+} // namespace snow

@@ -1,0 +1,61 @@
+/// @file renderer.hpp
+/// @brief The renderer: draws a World (read only) from a ViewCamera into the
+/// current GlContext, as an ordered list of passes.
+#pragma once
+
+#include "ecs/world.hpp"
+#include "render/camera.hpp"
+#include "render/frame_timings.hpp"
+#include "render/gl_context.hpp"
+#include "render/image.hpp"
+#include "render/render_pass.hpp"
+#include "render/render_settings.hpp"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace snow {
+
+/// Create, use and destroy it with `context` current. Passes, in order:
+///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
+///   "snow_surfaces" SnowSurface heightfields + aprons (seed 002 §6)
+///   "meshes"        MeshRenderable, lit, snow-white where exposed (seed 004)
+///   [far-field spectral snow, seed 000: insert_pass("flakes", ...)]
+///   "flakes"        FlakePool point sprites (seed 003/004)
+///   [fog puffs, seed 001: insert_pass("", ...) appends after "flakes"]
+class Renderer {
+  public:
+    /// Throws RenderError if the context lacks what the renderer needs.
+    explicit Renderer(GlContext& context, RenderSettings settings = {});
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Draws one frame of `world` into the context's framebuffer (no swap).
+    void render(const World& world, const ViewCamera& camera);
+    /// Per-pass times and counters of the last render().
+    [[nodiscard]] const FrameTimings& timings() const;
+    /// The framebuffer as an image, top row first (any backend).
+    [[nodiscard]] Image read_pixels() const;
+
+    [[nodiscard]] RenderSettings& settings();
+    [[nodiscard]] const RenderSettings& settings() const;
+    /// Inserts `pass` before the pass named `before`; an empty name appends.
+    /// Throws RenderError for an unknown name.
+    void insert_pass(std::string_view before, std::unique_ptr<RenderPass> pass);
+    [[nodiscard]] std::vector<std::string> pass_names() const;
+    /// Shader variants compiled so far (a world without Fog compiles no "FOG" one).
+    [[nodiscard]] std::vector<std::string> compiled_variants() const;
+    /// True on llvmpipe/softpipe, where distant flakes are thinned by default.
+    [[nodiscard]] bool software_gl() const;
+    /// GL_RENDERER and GL_VERSION of the context.
+    [[nodiscard]] std::string gl_description() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace snow
