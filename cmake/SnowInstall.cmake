@@ -5,14 +5,11 @@ include(CMakePackageConfigHelpers)
 
 set(SNOW_EXPORTED snow_ecs snow_sim)
 set(SNOW_HEADER_DIRS ecs systems)
-foreach(t snow_render snow_render_glad snow_scene)
+foreach(t snow_render snow_scene)
     if(TARGET ${t})
         list(APPEND SNOW_EXPORTED ${t})
     endif()
 endforeach()
-if(TARGET snow_render)
-    list(APPEND SNOW_HEADER_DIRS render)
-endif()
 
 foreach(t ${SNOW_EXPORTED})
     string(REPLACE "snow_" "" export_name ${t})
@@ -27,6 +24,14 @@ foreach(dir ${SNOW_HEADER_DIRS})
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir}
             FILES_MATCHING PATTERN "*.hpp")
 endforeach()
+# snow::render's public headers; the pass internals include glad and stay private.
+if(TARGET snow_render)
+    install(FILES render/camera.hpp render/frame_timings.hpp render/gl_context.hpp
+                  render/image.hpp render/render_error.hpp render/render_pass.hpp
+                  render/render_settings.hpp render/renderer.hpp render/shader.hpp
+                  render/osmesa_context.hpp render/glfw_context.hpp
+            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/render)
+endif()
 # snow::scene's one public header (the scene_*.hpp beside it are internals).
 if(TARGET snow_scene)
     install(FILES game/scene_loader.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/game)
