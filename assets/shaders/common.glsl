@@ -25,7 +25,9 @@ layout(std140) uniform Frame {
 // Diffuse light arriving at p with normal n: ambient, the point lights
 // (seed 002 §5: three coloured lights) with a soft 1/(1 + k d^2) falloff, the sun.
 vec3 irradiance(vec3 n, vec3 p) {
-    vec3 light = ambient.rgb + sun.w * max(dot(n, sun.xyz), 0.0) * vec3(1.0);
+    // Hemispheric sky light: an overcast sky lights what faces up the most.
+    vec3 light = ambient.rgb + sky.rgb * (0.35 * (0.5 + 0.5 * n.y)) +
+                 sun.w * max(dot(n, sun.xyz), 0.0) * vec3(1.0);
     for (int i = 0; i < counts.x; ++i) {
         vec3 to_light = light_pos[i].xyz - p;
         float dist2 = max(dot(to_light, to_light), 1e-8);

@@ -11,7 +11,8 @@ void main() {
     // flakes fade further (seed 004: "further points are more translucent").
     float coverage = min(1.0, (px * px) / (size * size));
     float alpha = flake.z * coverage * exp(-distance(p, camera_pos.xyz) * flake.w);
-    vec3 color = snow_color.rgb * min(irradiance(vec3(0.0, 1.0, 0.0), p), vec3(1.0));
+    // Ice scatters light from every side: flakes stay bright away from the lamps.
+    vec3 color = snow_color.rgb * min(vec3(0.75) + 0.5 * irradiance(vec3(0.0, 1.0, 0.0), p), vec3(1.0));
 #ifdef FOG
     color = apply_fog(color, p);
 #endif
