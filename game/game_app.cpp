@@ -58,7 +58,8 @@ class Game {
     GLFWwindow* window_ = nullptr;
     std::deque<Action> pending_;
     bool paused_ = false;
-    bool help_ = true;
+    bool screenshot_requested_ = false;
+    bool help_ = false;
     bool quit_ = false;
     std::uint64_t frame_ = 0;
     std::uint64_t screenshots_ = 0;
@@ -66,6 +67,8 @@ class Game {
     double last_mouse_x_ = 0.0, last_mouse_y_ = 0.0;
     float scroll_ = 0.0f;
     float fps_ = 0.0f;
+    int fps_frames_ = 0;
+    double fps_window_ = 0.0;
     std::string message_;
 };
 
@@ -166,14 +169,9 @@ void Game::apply(Action a) {
             quit_ = true;
         }
         break;
-    case Action::screenshot: {
-        std::filesystem::create_directories("screenshots");
-        const std::string path =
-            "screenshots/snow_" + std::to_string(screenshots_++) + ".png";
-        write_png(path, renderer_->read_pixels());
-        say("screenshot " + path);
+    case Action::screenshot:
+        screenshot_requested_ = true; // taken right after this frame's scene is drawn
         break;
-    }
     case Action::toggle_orbit:
         camera_->set_orbit(!camera_->orbit());
         say(camera_->orbit() ? "orbit camera" : "fly camera");
@@ -307,7 +305,14 @@ int Game::run() {
         const auto now = Clock::now();
         const double seconds = std::chrono::duration<double>(now - last).count();
         last = now;
-        fps_ = 0.9f * fps_ + 0.1f * static_cast<float>(seconds > 0.0 ? 1.0 / seconds : 0.0);
+        // Frames per second over half-second windows (a single frame's time is noisy).
+        ++fps_frames_;
+        fps_window_ += seconds;
+        if (fps_window_ >= 0.5) {
+            fps_ = static_cast<float>(fps_frames_ / fps_window_);
+            fps_frames_ = 0;
+            fps_window_ = 0.0;
+        }
         context_->poll_events();
         if (context_->should_close()) {
             break;
@@ -330,6 +335,13 @@ int Game::run() {
         }
         advance(seconds);
         renderer_->render(sim_->world(), camera_->camera());
+        if (screenshot_requested_) {
+            screenshot_requested_ = false;
+            std::filesystem::create_directories("screenshots");
+            const std::string path = "screenshots/snow_" + std::to_string(screenshots_++) + ".png";
+            write_png(path, renderer_->read_pixels());
+            say("screenshot " + std::filesystem::absolute(path).string());
+        }
         frame_output();
         ++frame_;
         if ((opt_.frames > 0 && frame_ >= opt_.frames) ||

@@ -55,7 +55,9 @@ void Hud::draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& 
     if (!info.last_message.empty()) {
         ImGui::TextUnformatted(info.last_message.c_str());
     }
-    if (info.help) {
+    if (!info.help) {
+        ImGui::TextUnformatted("H: keys");
+    } else {
         ImGui::Separator();
         for (const KeyHelp& k : key_help()) {
             ImGui::Text("%-14s %s", k.key, k.what);

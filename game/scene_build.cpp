@@ -84,6 +84,9 @@ SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
     if (o.max_flakes) {
         c.max_flakes = *o.max_flakes;
     }
+    if (o.smoothing_iterations) {
+        c.smoothing_iterations = *o.smoothing_iterations;
+    }
     return c;
 }
 
@@ -130,6 +133,10 @@ SurfaceDef surface_over(const SurfaceDef& settings, const Aabb& bounds) {
 }
 
 std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOverrides& o) {
+    if (o.cell_scale && !(std::isfinite(*o.cell_scale) && *o.cell_scale > 0.0f)) {
+        scene_fail("cell_scale (command-line override)",
+                   "must be finite and > 0 (got " + number_text(*o.cell_scale) + ")");
+    }
     // Check every surface before anything is allocated.
     std::vector<std::optional<SurfaceDef>> surfaces(d.geometry.nodes.size());
     std::uint64_t total_cells = 0;
@@ -142,6 +149,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         }
         if (role.surface) {
             surfaces[i] = surface_over(*role.surface, node.bounds);
+            surfaces[i]->cell *= o.cell_scale.value_or(1.0f);
             check_surface_cells(*surfaces[i], path, total_cells);
         }
     }
@@ -184,6 +192,12 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     }
     if (s.spectral) {
         through_facade(prefix, [&] { sim->set_spectral(*s.spectral); });
+    }
+    // After the scene's own camera and the default one mesh colliders bring.
+    if (const auto* cam = world.try_resource<OcclusionCamera>(); cam && o.occlusion_resolution) {
+        OcclusionCamera c = *cam;
+        c.resolution = *o.occlusion_resolution;
+        through_facade("occlusion (command-line override): ", [&] { sim->set_occlusion(c); });
     }
     world.set_resource<CameraDef>(s.camera);
     world.set_resource<Environment>(s.environment);

@@ -22,6 +22,12 @@ struct SceneOverrides {
     std::optional<unsigned> threads;
     std::optional<Integrator> integrator;
     std::optional<std::uint32_t> max_flakes;
+    /// Multiplies every surface's cell edge (quality presets, docs/accuracy.md).
+    std::optional<float> cell_scale;
+    /// Replaces the occlusion camera's resolution; ignored when the scene has none.
+    std::optional<std::uint32_t> occlusion_resolution;
+    /// Replaces SimConfig::smoothing_iterations.
+    std::optional<std::uint32_t> smoothing_iterations;
 };
 
 /// Either a ready simulation (sim set, error empty) or one error naming the
