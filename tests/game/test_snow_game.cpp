@@ -1,45 +1,28 @@
 // snow_game as a player starts it: headless frames to PNG, a window under
 // Xvfb that reacts to injected keys (pause, step) and exits cleanly, and
 // exit status 2 for a bad command line.
+#include "tests/support/run_app.hpp"
 #include "tests/support/xvfb.hpp"
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <string>
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out;
-};
-
-Result run_game(const std::string& env, const std::string& args) {
-    const std::string exe = std::string(SNOW_BINARY_DIR) + "/game/snow_game";
-    Result r;
-    FILE* p = popen((env + " " + exe + " " + args + " 2>&1").c_str(), "r");
-    if (p == nullptr) {
-        return r;
-    }
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), buf.size(), p) != nullptr) {
-        r.out += buf.data();
-    }
-    const int raw = pclose(p);
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return r;
+snow::test::AppRun run_game(const std::string& env, const std::string& args) {
+    return snow::test::run_app("game/snow_game", args, env);
 }
 
 TEST(SnowGame, HeadlessWritesFramesAndSaysWhere) {
     const std::filesystem::path dir =
         std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_frames";
     std::filesystem::remove_all(dir);
-    const Result r = run_game("MESA_SHADER_CACHE_DISABLE=true",
-                              "--headless --frames 3 --size 160x120 --out " + dir.string());
+    const snow::test::AppRun r =
+        run_game("MESA_SHADER_CACHE_DISABLE=true",
+                 "--headless --frames 3 --size 160x120 --out " + dir.string());
     ASSERT_EQ(r.status, 0) << r.out;
     for (const char* f : {"frame_00000.png", "frame_00001.png", "frame_00002.png"}) {
         EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
@@ -55,8 +38,8 @@ TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
     snow::test::Xvfb server;
     std::string display, error;
     ASSERT_TRUE(server.start(*xvfb_binary, display, error)) << error;
-    const Result r = run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display,
-                              "--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
+    const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display,
+                                          "--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
     const std::regex paused("paused at tick ([0-9]+)");

@@ -1,38 +1,20 @@
 // snow_run as a user runs it: the JSON report's fields, and the exit status
 // for bad arguments.
+#include "tests/support/run_app.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
-#include <filesystem>
 #include <string>
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out;
-};
-
-Result run(const std::string& args) {
-    const std::string exe = std::string(SNOW_BINARY_DIR) + "/game/snow_run";
-    Result r;
-    FILE* p = popen((exe + " " + args + " 2>/dev/null").c_str(), "r");
-    if (p == nullptr) {
-        return r;
-    }
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), buf.size(), p) != nullptr) {
-        r.out += buf.data();
-    }
-    const int raw = pclose(p);
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return r;
+snow::test::AppRun run(const std::string& args) {
+    return snow::test::run_app("game/snow_run", args, "", false);
 }
 
 TEST(SnowRunCli, JsonReportHasEveryField) {
-    const Result r = run("--ticks 200 --report json --threads 2");
+    const snow::test::AppRun r = run("--ticks 200 --report json --threads 2");
     ASSERT_EQ(r.status, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["ticks"], 200);
