@@ -55,7 +55,7 @@ Options parse(int argc, char** argv) {
             o.overrides.dt = static_cast<float>(parse_positive(f, args.value(), 1.0));
         } else if (f == "--max-flakes") {
             o.overrides.max_flakes =
-                static_cast<std::uint32_t>(parse_uint(f, args.value(), 0, 16u << 20));
+                static_cast<std::uint32_t>(parse_uint(f, args.value(), 1, 16u << 20));
         } else if (f == "--integrator") {
             const std::string_view name = args.value();
             const auto i = snow::parse_integrator(name);

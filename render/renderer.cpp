@@ -1,12 +1,14 @@
 #include "render/renderer.hpp"
 
 #include "render/flake_pass.hpp"
+#include "render/fog_puff_pass.hpp"
 #include "render/fog_table.hpp"
 #include "render/frame_block.hpp"
 #include "render/mesh_pass.hpp"
 #include "render/render_error.hpp"
 #include "render/scene_textures.hpp"
 #include "render/sky_pass.hpp"
+#include "render/spectral_pass.hpp"
 #include "render/surface_pass.hpp"
 #include "systems/fog.hpp"
 #include "systems/occlusion.hpp"
@@ -80,6 +82,8 @@ struct Renderer::Impl {
 
     void fill_block(FrameBlock& b, const World& world, const ViewCamera& camera,
                     const glm::mat4& view_proj, glm::ivec2 viewport, bool has_occlusion) const;
+    void add_effect_passes(const World& world);
+    [[nodiscard]] bool has_pass(std::string_view name) const;
 };
 
 Renderer::Renderer(GlContext& context, RenderSettings settings)
@@ -160,10 +164,31 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const ViewCam
     }
 }
 
+bool Renderer::Impl::has_pass(std::string_view name) const {
+    return std::any_of(passes.begin(), passes.end(),
+                       [&](const auto& p) { return p->name() == name; });
+}
+
+void Renderer::Impl::add_effect_passes(const World& world) {
+    // Draw only what the scene calls for: an effect's pass (and its FFT volume or
+    // shader) exists from the first frame whose world declares the effect.
+    if (world.has_resource<SpectralSnow>() && !has_pass(SpectralPass::pass_name)) {
+        // Behind the particle flakes (seed 000 composites over the background).
+        const auto flakes = std::find_if(passes.begin(), passes.end(),
+                                         [](const auto& p) { return p->name() == "flakes"; });
+        passes.insert(flakes, std::make_unique<SpectralPass>());
+    }
+    const Fog* fog = world.try_resource<Fog>();
+    if (fog != nullptr && !fog->puffs.empty() && !has_pass(FogPuffPass::pass_name)) {
+        passes.push_back(std::make_unique<FogPuffPass>()); // over everything, flakes included
+    }
+}
+
 void Renderer::render(const World& world, const ViewCamera& camera) {
     Impl& m = *impl_;
     const Clock::time_point frame_start = Clock::now();
     m.context.make_current();
+    m.add_effect_passes(world);
     FrameTimings& t = m.timings;
     t.synchronous = m.settings.timing_mode;
     t.flakes_alive = t.flakes_drawn = t.surfaces_uploaded = t.meshes_uploaded = 0;

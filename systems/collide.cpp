@@ -290,7 +290,7 @@ Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3&
     return land_on_top(c, m->surf_begin, m->surf_end, glm::vec3{p.x, top, p.z}, p, v, moved);
 }
 
-/// Every test for one flake that is inside the bounds and low enough to meet something.
+/// Every collider test for one flake that may meet something (finite position).
 Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
     glm::vec3 p{f.px[i], f.py[i], f.pz[i]};
@@ -365,17 +365,21 @@ void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_
     std::uint32_t n = 0;
     for (std::uint32_t k = 0; k < candidates; ++k) {
         const std::uint32_t i = slots[k];
+        // Colliders first: a flake whose path crosses a roof and ends below the
+        // bounds floor in the same tick is stopped by the roof, not removed.
+        if (std::isfinite(px[i]) && std::isfinite(py[i]) && std::isfinite(pz[i])) {
+            const Outcome o = resolve(c, i);
+            if (o != Outcome::keep) {
+                slots[n] = i; // n <= k: the compaction never overtakes the reading
+                reasons[n++] = o == Outcome::sphere ? Removal::sphere : Removal::bare;
+                continue;
+            }
+        }
         const float x = px[i], y = py[i], z = pz[i];
         if (!(x >= bb.min.x && x <= bb.max.x && y >= bb.min.y && y <= bb.max.y && z >= bb.min.z &&
               z <= bb.max.z)) {
             slots[n] = i;
             reasons[n++] = Removal::bounds;
-            continue;
-        }
-        const Outcome o = resolve(c, i);
-        if (o != Outcome::keep) {
-            slots[n] = i; // n <= k: the compaction never overtakes the reading
-            reasons[n++] = o == Outcome::sphere ? Removal::sphere : Removal::bare;
         }
     }
     c.scratch->counts[chunk] = n;

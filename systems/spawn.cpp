@@ -6,6 +6,7 @@
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/units.hpp"
 #include "systems/wind.hpp"
@@ -33,6 +34,33 @@ FaceWeights face_weights(const Aabb& b, const glm::vec3& wind, float fall_speed)
         f.total += w;
     }
     return f;
+}
+
+/// The spawn region: the bounds above the lowest bare ground (surfaces lying
+/// on nothing), so side-born flakes never start underground.
+Aabb spawn_region(const World& w, const Aabb& bounds) {
+    float ground = bounds.max.y;
+    bool any = false;
+    w.each<SnowSurface, SurfaceOf>([&](Entity, const SnowSurface& s, const SurfaceOf& of) {
+        if (!of.owner.is_null() || s.cell_count() == 0) {
+            return;
+        }
+        // The bare top is a plane: its lowest point is at a corner cell.
+        const std::size_t last_x = s.nx - 1, last_z = s.nz - 1;
+        for (const std::size_t i : {s.index(0, 0), s.index(static_cast<std::uint32_t>(last_x), 0),
+                                    s.index(0, static_cast<std::uint32_t>(last_z)),
+                                    s.index(static_cast<std::uint32_t>(last_x),
+                                            static_cast<std::uint32_t>(last_z))}) {
+            ground = std::min(ground, static_cast<float>(static_cast<double>(s.base_level[i]) *
+                                                         s.unit_height));
+            any = true;
+        }
+    });
+    Aabb r = bounds;
+    if (any) {
+        r.min.y = std::clamp(ground, bounds.min.y, bounds.max.y);
+    }
+    return r;
 }
 
 /// A point on face `face`, given two uniforms; kept a hair inside the box.
@@ -64,6 +92,7 @@ void spawn_system(World& w) {
     const glm::vec3 air = wind ? wind->current : glm::vec3(0.0f);
     const float gravity = std::max(-cfg.gravity.y, 1e-6f);
 
+    const Aabb region = spawn_region(w, cfg.bounds);
     std::uint32_t emitter_index = 0;
     w.each<Emitter>([&](Entity, const Emitter& em) {
         const RngKey count_key{cfg.seed, tick, emitter_index++, Stream::spawn_activate};
@@ -71,7 +100,7 @@ void spawn_system(World& w) {
         const double expected = static_cast<double>(em.rate) * cfg.dt;
         auto n = static_cast<std::uint64_t>(expected + rng_uniform(count_key));
         const float mean_fall = 0.5f * (em.fall_speed_min + em.fall_speed_max);
-        const FaceWeights faces = face_weights(cfg.bounds, air, mean_fall);
+        const FaceWeights faces = face_weights(region, air, mean_fall);
         for (; n > 0; --n) {
             std::uint32_t slot = 0;
             if (!pool.acquire(slot)) {
@@ -84,7 +113,7 @@ void spawn_system(World& w) {
                 pick -= faces.w[face];
                 ++face;
             }
-            const glm::vec3 p = point_on_face(cfg.bounds, face, rng_uniform(k, 1), rng_uniform(k, 2));
+            const glm::vec3 p = point_on_face(region, face, rng_uniform(k, 1), rng_uniform(k, 2));
             const float u_mass = rng_uniform({cfg.seed, tick, slot, Stream::spawn_mass});
             const float mass_g = log_uniform(em.mass_min_g, em.mass_max_g, u_mass);
             const auto units = static_cast<std::uint32_t>(

@@ -1,0 +1,407 @@
+// Hard case 11: NaN, ±inf, negative and zero values through every door: the
+// Simulation API (SnowError naming the field, state exactly unchanged: Box2D's
+// test_invalid_input pattern), a scene file (an error naming the file and the
+// field, no Simulation), and snow_run's flags (exit status 2, the flag named).
+#include "hard_case_util.hpp"
+
+#include "game/scene_loader.hpp"
+#include "systems/sample_scenes.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace snow {
+namespace {
+
+constexpr float nan_v = std::numeric_limits<float>::quiet_NaN();
+constexpr float inf_v = std::numeric_limits<float>::infinity();
+
+/// What a field accepts; each rule implies the bad values tried against it.
+enum class Rule { finite, non_negative, positive };
+
+/// The values a field with rule `r` must reject.
+std::vector<float> bad_values(Rule r) {
+    switch (r) {
+    case Rule::finite:
+        return {nan_v, inf_v, -inf_v};
+    case Rule::non_negative:
+        return {nan_v, inf_v, -inf_v, -1.0f, -1e-30f};
+    case Rule::positive:
+        return {nan_v, inf_v, -inf_v, -1.0f, 0.0f, -0.0f};
+    }
+    return {};
+}
+
+/// One settable number of the API: the name its error must contain and a call
+/// that passes `v` in that field (everything else valid).
+struct Field {
+    std::string name;
+    Rule rule;
+    std::function<void(Simulation&, float)> call;
+};
+
+/// A call that builds a default `Def`, applies `set` and hands it to the API.
+template <typename Def, typename Setter>
+std::function<void(Simulation&, float)> with(Setter set) {
+    return [set](Simulation& sim, float v) {
+        Def d;
+        set(d, v);
+        if constexpr (std::is_same_v<Def, Emitter>) {
+            sim.add_emitter(d);
+        } else if constexpr (std::is_same_v<Def, Wind>) {
+            sim.set_wind(d);
+        } else if constexpr (std::is_same_v<Def, SurfaceDef>) {
+            sim.add_surface(d);
+        } else if constexpr (std::is_same_v<Def, Fog>) {
+            sim.set_fog(d);
+        } else if constexpr (std::is_same_v<Def, SpectralSnow>) {
+            sim.set_spectral(d);
+        } else {
+            sim.set_occlusion(d);
+        }
+    };
+}
+
+/// Every number the API takes that has a validity rule.
+std::vector<Field> api_fields() {
+    using R = Rule;
+    return {
+        {"emitter.rate", R::non_negative, with<Emitter>([](Emitter& e, float v) { e.rate = v; })},
+        {"emitter.mass_min_g", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.mass_min_g = v; })},
+        {"emitter.mass_max_g", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.mass_max_g = v; })},
+        {"emitter.size_min", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.size_min = v; })},
+        {"emitter.size_max", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.size_max = v; })},
+        {"emitter.fall_speed_min", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.fall_speed_min = v; })},
+        {"emitter.fall_speed_max", R::positive,
+         with<Emitter>([](Emitter& e, float v) { e.fall_speed_max = v; })},
+        {"wind.base.x", R::finite, with<Wind>([](Wind& w, float v) { w.base.x = v; })},
+        {"wind.base.y", R::finite, with<Wind>([](Wind& w, float v) { w.base.y = v; })},
+        {"wind.current.z", R::finite, with<Wind>([](Wind& w, float v) { w.current.z = v; })},
+        {"wind.deviation.x", R::finite, with<Wind>([](Wind& w, float v) { w.deviation.x = v; })},
+        {"wind.walk", R::non_negative, with<Wind>([](Wind& w, float v) { w.walk = v; })},
+        {"wind.max_deviation", R::non_negative,
+         with<Wind>([](Wind& w, float v) { w.max_deviation = v; })},
+        {"wind.gust_strength", R::non_negative,
+         with<Wind>([](Wind& w, float v) { w.gust_strength = v; })},
+        {"wind.gust_rate", R::non_negative, with<Wind>([](Wind& w, float v) { w.gust_rate = v; })},
+        {"wind.gust_duration", R::positive,
+         with<Wind>([](Wind& w, float v) { w.gust_duration = v; })},
+        {"wind.gust_left", R::non_negative, with<Wind>([](Wind& w, float v) { w.gust_left = v; })},
+        {"surface.x0", R::finite, with<SurfaceDef>([](SurfaceDef& d, float v) { d.x0 = v; })},
+        {"surface.z0", R::finite, with<SurfaceDef>([](SurfaceDef& d, float v) { d.z0 = v; })},
+        {"surface.size_x", R::positive,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.size_x = v; })},
+        {"surface.size_z", R::positive,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.size_z = v; })},
+        {"surface.cell", R::positive, with<SurfaceDef>([](SurfaceDef& d, float v) { d.cell = v; })},
+        {"surface.base_y", R::finite,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.base_y = v; })},
+        {"surface.slope_x", R::finite,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.slope_x = v; })},
+        {"surface.slope_z", R::finite,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.slope_z = v; })},
+        {"surface.edge_limit", R::non_negative,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.edge_limit = v; })},
+        {"surface.laplacian_limit", R::positive,
+         with<SurfaceDef>([](SurfaceDef& d, float v) { d.laplacian_limit = v; })},
+        {"box.min.x", R::finite,
+         [](Simulation& s, float v) {
+             s.add_box({{v, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}});
+         }},
+        {"box.max.y", R::finite,
+         [](Simulation& s, float v) {
+             s.add_box({{0.0f, 0.0f, 0.0f}, {1.0f, v, 1.0f}});
+         }},
+        {"sphere.center.z", R::finite,
+         [](Simulation& s, float v) {
+             s.add_sphere({0.0f, 1.0f, v}, 0.5f);
+         }},
+        {"sphere.radius", R::positive,
+         [](Simulation& s, float v) {
+             s.add_sphere({0.0f, 1.0f, 0.0f}, v);
+         }},
+        {"mesh.triangles[1]", R::finite,
+         [](Simulation& s, float v) {
+             s.add_mesh_collider({{0.0f, 1.0f, 0.0f}, {1.0f, v, 0.0f}, {0.0f, 1.0f, 1.0f}});
+         }},
+        {"occlusion.tilt", R::finite,
+         with<OcclusionCamera>([](OcclusionCamera& c, float v) { c.tilt = v; })},
+        {"fog.color.y", R::finite, with<Fog>([](Fog& f, float v) { f.color.y = v; })},
+        {"fog.density", R::non_negative, with<Fog>([](Fog& f, float v) { f.density = v; })},
+        {"fog.half_distance", R::positive, with<Fog>([](Fog& f, float v) { f.half_distance = v; })},
+        {"fog.layer_density", R::non_negative,
+         with<Fog>([](Fog& f, float v) { f.layer_density = v; })},
+        {"fog.puffs[0].sigma", R::positive, with<Fog>([](Fog& f, float v) {
+             f.puffs.push_back(FogPuff{});
+             f.puffs[0].sigma = v;
+         })},
+        {"spectral.speed", R::positive,
+         with<SpectralSnow>([](SpectralSnow& s, float v) { s.speed = v; })},
+        {"spectral.opacity", R::non_negative,
+         with<SpectralSnow>([](SpectralSnow& s, float v) { s.opacity = v; })},
+        {"spectral.start_distance", R::non_negative,
+         with<SpectralSnow>([](SpectralSnow& s, float v) { s.start_distance = v; })},
+    };
+}
+
+/// Everything a rejected call could have touched, hashed or not.
+struct Observed {
+    std::uint64_t hash;
+    std::size_t entities;
+    std::uint64_t geometry;
+    bool fog, spectral, occlusion;
+    friend bool operator==(const Observed&, const Observed&) = default;
+};
+
+/// The observable state of `sim`.
+Observed observe(const Simulation& sim) {
+    const World& w = sim.world();
+    return {sim.state_hash(),
+            w.entity_count(),
+            w.resource<GeometryVersion>().version,
+            w.has_resource<Fog>(),
+            w.has_resource<SpectralSnow>(),
+            w.has_resource<OcclusionCamera>()};
+}
+
+/// A small sample yard after 30 ticks.
+std::unique_ptr<Simulation> running_yard() {
+    YardOptions o;
+    o.seed = 11;
+    o.ground_cells = 32;
+    o.max_flakes = 4000;
+    auto sim = make_yard(o);
+    sim->run(30);
+    return sim;
+}
+
+TEST(HardCaseInvalidInput, ApiRejectsEveryBadNumberAndLeavesTheStateAlone) {
+    auto sim = running_yard();
+    auto twin = running_yard(); // never sees bad input
+    const Observed before = observe(*sim);
+    int rejected = 0;
+    for (const Field& field : api_fields()) {
+        for (const float v : bad_values(field.rule)) {
+            SCOPED_TRACE(::testing::Message() << field.name << " = " << v);
+            try {
+                field.call(*sim, v);
+                ADD_FAILURE() << "accepted";
+            } catch (const SnowError& e) {
+                EXPECT_NE(std::string(e.what()).find(field.name), std::string::npos)
+                    << "message does not name the field: " << e.what();
+                ++rejected;
+            }
+            ASSERT_EQ(observe(*sim), before) << "a rejected call changed the simulation";
+        }
+    }
+    // Handles: null, never created.
+    EXPECT_THROW(sim->remove(null_entity), SnowError);
+    EXPECT_THROW(sim->add_surface(SurfaceDef{}, Entity::make(4000, 3)), SnowError);
+    EXPECT_EQ(observe(*sim), before);
+    EXPECT_GT(rejected, 150);
+    RecordProperty("rejected", rejected);
+    // Nothing hidden changed either: the two run on identically.
+    for (int t = 0; t < 60; ++t) {
+        sim->tick();
+        twin->tick();
+        ASSERT_EQ(sim->state_hash(), twin->state_hash()) << "tick " << t;
+    }
+    ASSERT_TRUE(hard::healthy(*sim));
+}
+
+TEST(HardCaseInvalidInput, BadSimConfigNeverMakesASimulation) {
+    struct Bad {
+        std::string name;
+        Rule rule;
+        std::function<void(SimConfig&, float)> set;
+    };
+    const std::vector<Bad> bad = {
+        {"simulation.dt", Rule::positive, [](SimConfig& c, float v) { c.dt = v; }},
+        {"simulation.gravity.y", Rule::finite, [](SimConfig& c, float v) { c.gravity.y = v; }},
+        {"simulation.bounds.min.x", Rule::finite,
+         [](SimConfig& c, float v) { c.bounds.min.x = v; }},
+        {"simulation.bounds.max.z", Rule::finite,
+         [](SimConfig& c, float v) { c.bounds.max.z = v; }},
+    };
+    for (const Bad& b : bad) {
+        for (const float v : bad_values(b.rule)) {
+            SCOPED_TRACE(::testing::Message() << b.name << " = " << v);
+            SimConfig c;
+            b.set(c, v);
+            try {
+                Simulation sim(c);
+                ADD_FAILURE() << "accepted";
+            } catch (const SnowError& e) {
+                EXPECT_NE(std::string(e.what()).find(b.name), std::string::npos) << e.what();
+            }
+        }
+    }
+}
+
+/// A whole file as text.
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream os;
+    os << in.rdbuf();
+    return os.str();
+}
+
+/// The minimal scene with one value replaced (the original text must be present).
+std::string minimal_with(const std::string& from, const std::string& to) {
+    std::string text = read_text(std::string(SNOW_SOURCE_DIR) + "/assets/scenes/minimal.gltf");
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "test setup: '" << from << "' not in minimal.gltf";
+    if (at != std::string::npos) {
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+/// A bad value in a scene file and what its error must contain.
+struct SceneEdit {
+    std::string from, to, expect;
+};
+
+const std::vector<SceneEdit>& scene_edits() {
+    // JSON has no NaN or infinity: such text fails as JSON (no field to name);
+    // values past float range and negative ones are named by their field path.
+    static const std::vector<SceneEdit> edits = {
+        {"\"dt\": 0.016666666666666666", "\"dt\": -0.5", "simulation.dt"},
+        {"\"dt\": 0.016666666666666666", "\"dt\": 0", "simulation.dt"},
+        {"\"dt\": 0.016666666666666666", "\"dt\": NaN", "not valid JSON"},
+        {"\"dt\": 0.016666666666666666", "\"dt\": 1e999", "not valid JSON"},
+        {"\"dt\": 0.016666666666666666", "\"dt\": 1e39", "simulation.dt"},
+        {"\"max_flakes\": 5000", "\"max_flakes\": -5", "simulation.max_flakes"},
+        {"\"rate\": 1000.0", "\"rate\": -1000.0", "emitter.rate"},
+        {"\"mass_min_g\": 0.005", "\"mass_min_g\": -0.005", "emitter.mass_min_g"},
+        {"\"fall_speed_max\": 1.5", "\"fall_speed_max\": -1e39", "emitter.fall_speed_max"},
+        {"\"cell\": 0.1", "\"cell\": -0.1", "surface.cell"},
+        {"\"cell\": 0.1", "\"cell\": 0", "surface.cell"},
+        {"\"edge_limit\": 0.1", "\"edge_limit\": -0.1", "surface.edge_limit"},
+        {"\"edge_limit\": 0.1", "\"edge_limit\": -1e999", "not valid JSON"},
+        // Past float range after the node transform: named by the node.
+        {"\"translation\": [0.0, -0.1, 0.0]", "\"translation\": [0.0, -1e39, 0.0]", "nodes[0]"},
+    };
+    return edits;
+}
+
+TEST(HardCaseInvalidInput, SceneWithBadNumberNamesTheFieldAndBuildsNothing) {
+    for (const SceneEdit& e : scene_edits()) {
+        SCOPED_TRACE(e.to);
+        const SceneLoadResult r = load_scene_memory(minimal_with(e.from, e.to), "bad.gltf");
+        EXPECT_EQ(r.sim, nullptr);
+        EXPECT_NE(r.error.find("bad.gltf"), std::string::npos) << r.error;
+        EXPECT_NE(r.error.find(e.expect), std::string::npos) << r.error;
+    }
+}
+
+struct CliRun {
+    int status = -1;
+    std::string output; ///< stdout and stderr
+};
+
+/// Runs snow_run with `args`; stdout and stderr together.
+CliRun run_snow_run(const std::string& args) {
+    const std::string exe = std::string(SNOW_BINARY_DIR) + "/game/snow_run";
+    CliRun r;
+    FILE* p = popen((exe + " " + args + " 2>&1").c_str(), "r");
+    if (p == nullptr) {
+        return r;
+    }
+    std::array<char, 4096> buf{};
+    while (std::fgets(buf.data(), buf.size(), p) != nullptr) {
+        r.output += buf.data();
+    }
+    const int raw = pclose(p);
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return r;
+}
+
+/// snow_run was built (SNOW_BUILD_GAME).
+bool have_snow_run() {
+    return std::filesystem::exists(std::string(SNOW_BINARY_DIR) + "/game/snow_run");
+}
+
+TEST(HardCaseInvalidInput, SnowRunFlagsWithBadNumbersExitWithStatus2) {
+    if (!have_snow_run()) {
+        GTEST_SKIP() << "snow_run not built (SNOW_BUILD_GAME=OFF)";
+    }
+    struct Flag {
+        std::string args, names;
+    };
+    const std::vector<Flag> flags = {
+        {"--dt nan", "--dt"},
+        {"--dt -nan", "--dt"},
+        {"--dt inf", "--dt"},
+        {"--dt -inf", "--dt"},
+        {"--dt -0.5", "--dt"},
+        {"--dt 0", "--dt"},
+        {"--dt -0", "--dt"},
+        {"--dt 1e400", "--dt"},
+        {"--dt 2", "--dt"},
+        {"--dt 1e-50", "simulation.dt"}, // positive as a double, 0 as a float
+        {"--ticks -1", "--ticks"},
+        {"--ticks nan", "--ticks"},
+        {"--ticks 1e3", "--ticks"},
+        {"--seed -1", "--seed"},
+        {"--seed inf", "--seed"},
+        {"--threads -1", "--threads"},
+        {"--threads 0", "--threads"},
+        {"--threads nan", "--threads"},
+        {"--max-flakes -1", "--max-flakes"},
+        {"--max-flakes nan", "--max-flakes"},
+        {"--max-flakes 99999999999", "--max-flakes"},
+    };
+    for (const Flag& f : flags) {
+        const CliRun r = run_snow_run(f.args + " --ticks 5");
+        EXPECT_EQ(r.status, 2) << f.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(f.names), std::string::npos) << f.args << "\n" << r.output;
+    }
+}
+
+TEST(HardCaseInvalidInput, SnowRunSceneWithBadNumberExitsWithStatus2) {
+    if (!have_snow_run()) {
+        GTEST_SKIP() << "snow_run not built (SNOW_BUILD_GAME=OFF)";
+    }
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                      ("snow_hard_case_scene_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    for (const SceneEdit& e : scene_edits()) {
+        const std::filesystem::path file = dir / "bad.gltf";
+        std::ofstream(file, std::ios::binary) << minimal_with(e.from, e.to);
+        const CliRun r = run_snow_run("--scene " + file.string() + " --ticks 5");
+        EXPECT_EQ(r.status, 2) << e.to << "\n" << r.output;
+        EXPECT_NE(r.output.find(e.expect), std::string::npos) << e.to << "\n" << r.output;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(HardCaseInvalidInput, SnowRunRejectsAZeroFlakePool) {
+    // docs/scenes.md: max_flakes is valid in [1, 16 777 216]; the scene loader
+    // enforces it, but the --max-flakes override accepts 0 and runs a scene that
+    // can never hold a flake (exit 0). Fails until snow_run/validate(SimConfig) check it.
+    if (!have_snow_run()) {
+        GTEST_SKIP() << "snow_run not built (SNOW_BUILD_GAME=OFF)";
+    }
+    const CliRun r = run_snow_run("--max-flakes 0 --ticks 5");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("max"), std::string::npos) << r.output;
+}
+
+} // namespace
+} // namespace snow
