@@ -4,12 +4,14 @@
 // free stack and the state hash do not depend on the thread count.
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
+#include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
+#include "systems/wind.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +56,9 @@ struct Context {
     const SnowSurface* const* surfaces = nullptr;
     Aabb bounds;
     float dt = 0.0f;
+    Integrator integrator = Integrator::explicit_euler;
+    glm::vec3 gravity{0.0f};
+    glm::vec3 wind{0.0f};
     /// Speeds (m/s) at or above which a flake may leave the 3×3 cells around
     /// it in one tick (y: through a tilted map lookup), so cell_reach cannot
     /// clear it.
@@ -295,7 +300,11 @@ Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
     glm::vec3 p{f.px[i], f.py[i], f.pz[i]};
     glm::vec3 v{f.vx[i], f.vy[i], f.vz[i]};
-    const glm::vec3 p0 = p - v * c.dt;
+    const float k = f.k_over_m[i];
+    const glm::vec3 p0{
+        integrate::path_start(c.integrator, p.x, v.x, k, c.gravity.x, c.wind.x, c.dt),
+        integrate::path_start(c.integrator, p.y, v.y, k, c.gravity.y, c.wind.y, c.dt),
+        integrate::path_start(c.integrator, p.z, v.z, k, c.gravity.z, c.wind.z, c.dt)};
     bool moved = false, done = false;
     Outcome out = grid_colliders(c, p0, p, v, moved, done);
     if (out == Outcome::keep && !done && c.map != nullptr) {
@@ -448,6 +457,11 @@ void collide_system(World& w) {
     const auto& cfg = w.resource<SimConfig>();
     c.bounds = cfg.bounds;
     c.dt = cfg.dt;
+    c.integrator = cfg.integrator;
+    c.gravity = cfg.gravity;
+    if (const auto* wind = w.try_resource<Wind>()) {
+        c.wind = wind->current;
+    }
     // 0.9 of a cell per tick leaves margin for the rounding of p - v·dt.
     c.fast_x = 0.9f * grid.cell_size_x / c.dt;
     c.fast_z = 0.9f * grid.cell_size_z / c.dt;
