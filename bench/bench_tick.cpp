@@ -1,5 +1,5 @@
 // Full-tick and per-system costs at 10k / 100k / 1M airborne flakes, 1 and 2
-// threads (issue #8). ns_per_flake = time per tick / flakes.
+// threads (issue #8). ns_per_flake = time per tick / flakes alive that tick.
 #include "bench_scene.hpp"
 
 #include "systems/systems.hpp"
@@ -7,31 +7,36 @@
 namespace snow::bench {
 namespace {
 
+template <Load load>
 void full_tick(benchmark::State& state) {
-    BenchWorld bw(static_cast<std::uint32_t>(state.range(0)), static_cast<unsigned>(state.range(1)));
+    BenchWorld bw(static_cast<std::uint32_t>(state.range(0)), static_cast<unsigned>(state.range(1)),
+                  load);
     std::uint64_t i = 0;
     for (auto _ : state) {
+        const std::uint32_t alive = bw.sim->flakes().alive;
         bw.sim->tick();
-        bw.keep_load(state, i++);
+        bw.step_done(state, i, alive);
     }
-    report_per_flake(state, bw.flakes);
+    report_per_flake(state, bw);
 }
 
-/// One system alone on the bench world (the others not run).
+/// One system alone on the snowfall world (the others not run).
 template <void (*system)(World&)>
 void one_system(benchmark::State& state) {
-    BenchWorld bw(static_cast<std::uint32_t>(state.range(0)), static_cast<unsigned>(state.range(1)));
+    BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
+                  static_cast<unsigned>(state.range(1)));
     std::uint64_t i = 0;
     for (auto _ : state) {
+        const std::uint32_t alive = bw.sim->flakes().alive;
         system(bw.sim->world());
-        bw.keep_load(state, i++);
+        bw.step_done(state, i, alive);
     }
-    report_per_flake(state, bw.flakes);
+    report_per_flake(state, bw);
 }
 
-void flake_args(benchmark::internal::Benchmark* b) {
+void flake_args(benchmark::internal::Benchmark* b, std::initializer_list<int> sizes) {
     b->ArgNames({"flakes", "threads"});
-    for (const int n : {10000, 100000, 1000000}) {
+    for (const int n : sizes) {
         for (const int t : {1, 2}) {
             b->Args({n, t});
         }
@@ -39,11 +44,20 @@ void flake_args(benchmark::internal::Benchmark* b) {
     b->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
+/// The sizes of the issue; the full tick also gets points between them for the scaling plot.
+void system_args(benchmark::internal::Benchmark* b) {
+    flake_args(b, {10000, 100000, 1000000});
+}
+void scaling_args(benchmark::internal::Benchmark* b) {
+    flake_args(b, {10000, 30000, 100000, 300000, 1000000, 3000000});
+}
+
 } // namespace
 
-BENCHMARK(full_tick)->Name("BM_SimTick")->Apply(flake_args);
-BENCHMARK(one_system<integrate_system>)->Name("BM_Integrate")->Apply(flake_args);
-BENCHMARK(one_system<collide_system>)->Name("BM_Collide")->Apply(flake_args);
-BENCHMARK(one_system<deposit_system>)->Name("BM_Deposit")->Apply(flake_args);
+BENCHMARK(full_tick<Load::snowfall>)->Name("BM_SimTick")->Apply(scaling_args);
+BENCHMARK(full_tick<Load::aloft>)->Name("BM_SimTickAloft")->Apply(system_args);
+BENCHMARK(one_system<integrate_system>)->Name("BM_Integrate")->Apply(system_args);
+BENCHMARK(one_system<collide_system>)->Name("BM_Collide")->Apply(system_args);
+BENCHMARK(one_system<deposit_system>)->Name("BM_Deposit")->Apply(system_args);
 
 } // namespace snow::bench

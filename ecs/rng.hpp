@@ -43,7 +43,8 @@ struct RngKey {
 [[nodiscard]] constexpr std::uint64_t rng_bits(const RngKey& k, std::uint32_t n = 0) {
     std::uint64_t h = mix64(k.seed ^ 0x9E3779B97F4A7C15ull);
     h = mix64(h ^ k.tick);
-    h = mix64(h ^ ((static_cast<std::uint64_t>(k.slot) << 32) | static_cast<std::uint32_t>(k.stream)));
+    h = mix64(h ^
+              ((static_cast<std::uint64_t>(k.slot) << 32) | static_cast<std::uint32_t>(k.stream)));
     return mix64(h + n);
 }
 
@@ -58,7 +59,8 @@ struct RngKey {
 }
 
 /// Uniform integer in [0, n) (n > 0), by 64-bit multiply-shift (Lemire).
-[[nodiscard]] constexpr std::uint32_t rng_below(const RngKey& k, std::uint32_t draw, std::uint32_t n) {
+[[nodiscard]] constexpr std::uint32_t rng_below(const RngKey& k, std::uint32_t draw,
+                                                std::uint32_t n) {
     const std::uint64_t r = rng_bits(k, draw) >> 32;
     return static_cast<std::uint32_t>((r * n) >> 32);
 }

@@ -38,9 +38,9 @@ void CameraController::update(const CameraInput& in, float seconds) {
     }
     speed_ = std::clamp(speed_ * std::pow(1.2f, in.scroll), 0.25f, 100.0f);
     const glm::vec3 up{0.0f, 1.0f, 0.0f};
-    camera_.position += (camera_.right() * in.move.x + up * in.move.y +
-                         camera_.forward() * in.move.z) *
-                        (speed_ * seconds);
+    camera_.position +=
+        (camera_.right() * in.move.x + up * in.move.y + camera_.forward() * in.move.z) *
+        (speed_ * seconds);
 }
 
 } // namespace snow

@@ -12,9 +12,9 @@ namespace snow {
 
 /// Input sampled once per frame.
 struct CameraInput {
-    glm::vec3 move{0.0f};    ///< x: right, y: up, z: forward, each -1..1
-    glm::vec2 look{0.0f};    ///< mouse delta in pixels while looking/dragging
-    float scroll = 0.0f;     ///< wheel steps this frame
+    glm::vec3 move{0.0f}; ///< x: right, y: up, z: forward, each -1..1
+    glm::vec2 look{0.0f}; ///< mouse delta in pixels while looking/dragging
+    float scroll = 0.0f;  ///< wheel steps this frame
 };
 
 class CameraController {

@@ -74,11 +74,10 @@ class Game {
 
 bool Game::load() {
     SceneOverrides ov = opt_.overrides;
-    if (!ov.dt) {
-        ov.dt = quality_presets[quality_].dt;
-    }
-    SceneLoadResult r = opt_.scene ? load_scene_file(*opt_.scene, ov)
-                                   : load_scene_memory(builtin_village_gltf(), "builtin:village", ov);
+    apply_quality(quality_presets[quality_], ov);
+    SceneLoadResult r = opt_.scene
+                            ? load_scene_file(*opt_.scene, ov)
+                            : load_scene_memory(builtin_village_gltf(), "builtin:village", ov);
     if (!r.sim) {
         std::fprintf(stderr, "snow_game: %s\n", r.error.c_str());
         return false;
@@ -193,9 +192,9 @@ void Game::read_window_input(float seconds) {
                down(GLFW_KEY_W) - down(GLFW_KEY_S)};
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window_, &x, &y);
-    const bool looking = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                         (camera_->orbit() &&
-                          glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
+    const bool looking =
+        glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+        (camera_->orbit() && glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
     if (looking && !(hud_ && hud_->wants_mouse())) {
         in.look = {static_cast<float>(x - last_mouse_x_), static_cast<float>(y - last_mouse_y_)};
     }
@@ -241,12 +240,14 @@ void Game::frame_output() {
     }
     if (!opt_.out_dir.empty()) {
         char name[32];
-        std::snprintf(name, sizeof name, "frame_%05llu.png", static_cast<unsigned long long>(frame_));
+        std::snprintf(name, sizeof name, "frame_%05llu.png",
+                      static_cast<unsigned long long>(frame_));
         write_png(std::filesystem::path(opt_.out_dir) / name, renderer_->read_pixels());
     }
     if (opt_.frames > 0 && (frame_ + 1) % 30 == 0) {
         const MassReport m = sim_->mass();
-        std::printf("snow_game: frame %llu/%llu, tick %llu, %u flakes, settled %llu units, %.1f ms/frame render\n",
+        std::printf("snow_game: frame %llu/%llu, tick %llu, %u flakes, settled %llu units, %.1f "
+                    "ms/frame render\n",
                     static_cast<unsigned long long>(frame_ + 1),
                     static_cast<unsigned long long>(opt_.frames),
                     static_cast<unsigned long long>(sim_->tick_count()), sim_->flakes().alive,
@@ -292,9 +293,8 @@ int Game::run() {
     settings.lod_distance = quality_presets[quality_].lod_distance;
     settings.flake_lod = quality_presets[quality_].lod;
     renderer_ = std::make_unique<Renderer>(*context_, settings);
-    const CameraDef def = sim_->world().has_resource<CameraDef>()
-                              ? sim_->world().resource<CameraDef>()
-                              : CameraDef{};
+    const CameraDef def =
+        sim_->world().has_resource<CameraDef>() ? sim_->world().resource<CameraDef>() : CameraDef{};
     camera_ = std::make_unique<CameraController>(ViewCamera::from_def(def), def.target);
     std::printf("snow_game: %s, %s (%s)\n", window_ ? "window" : "headless",
                 renderer_->gl_description().c_str(), std::string(context_->name()).c_str());
@@ -351,14 +351,13 @@ int Game::run() {
         }
     }
     const MassReport m = sim_->mass();
-    std::printf("snow_game: done after %llu frames, tick %llu; mass units spawned %llu = airborne "
-                "%llu + settled %llu + removed %llu\n",
-                static_cast<unsigned long long>(frame_),
-                static_cast<unsigned long long>(sim_->tick_count()),
-                static_cast<unsigned long long>(m.spawned),
-                static_cast<unsigned long long>(m.airborne),
-                static_cast<unsigned long long>(m.settled),
-                static_cast<unsigned long long>(m.removed));
+    std::printf(
+        "snow_game: done after %llu frames, tick %llu; mass units spawned %llu = airborne "
+        "%llu + settled %llu + removed %llu\n",
+        static_cast<unsigned long long>(frame_),
+        static_cast<unsigned long long>(sim_->tick_count()),
+        static_cast<unsigned long long>(m.spawned), static_cast<unsigned long long>(m.airborne),
+        static_cast<unsigned long long>(m.settled), static_cast<unsigned long long>(m.removed));
     if (!window_ && !opt_.out_dir.empty()) {
         std::printf("snow_game: wrote %llu frames to %s\n", static_cast<unsigned long long>(frame_),
                     std::filesystem::absolute(opt_.out_dir).c_str());

@@ -20,10 +20,10 @@ struct GameOptions {
     std::string out_dir;              ///< headless: where PNG frames go
     double seconds = 0.0;             ///< stop after this much wall time (0: no limit)
     int width = 1280, height = 720;
-    std::uint64_t warmup_ticks = 0;   ///< ticks simulated before the first frame
-    std::size_t quality = 1;          ///< index into quality_presets
-    std::vector<InjectedKey> inject;  ///< scripted key presses
-    bool video = false;               ///< headless: encode frames with ffmpeg if present
+    std::uint64_t warmup_ticks = 0;  ///< ticks simulated before the first frame
+    std::size_t quality = 1;         ///< index into quality_presets
+    std::vector<InjectedKey> inject; ///< scripted key presses
+    bool video = false;              ///< headless: encode frames with ffmpeg if present
     SceneOverrides overrides;
 };
 

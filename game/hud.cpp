@@ -24,7 +24,9 @@ Hud::~Hud() {
     ImGui::DestroyContext();
 }
 
-bool Hud::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Hud::wants_mouse() const {
+    return ImGui::GetIO().WantCaptureMouse;
+}
 
 void Hud::draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& info) {
     ImGui_ImplOpenGL3_NewFrame();

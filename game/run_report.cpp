@@ -27,9 +27,10 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
     j["threads"] = cfg.threads;
     j["integrator"] = std::string(integrator_name(cfg.integrator));
     j["state_hash"] = hash_hex(sim.state_hash());
-    j["mass"] = {{"unit_kg", unit_kg},     {"spawned", m.spawned}, {"airborne", m.airborne},
-                 {"settled", m.settled},   {"removed", m.removed}, {"balanced", m.balanced()}};
-    j["flakes"] = {{"alive", sim.flakes().alive}, {"max_alive", sim.flakes().max_alive},
+    j["mass"] = {{"unit_kg", unit_kg},   {"spawned", m.spawned}, {"airborne", m.airborne},
+                 {"settled", m.settled}, {"removed", m.removed}, {"balanced", m.balanced()}};
+    j["flakes"] = {{"alive", sim.flakes().alive},
+                   {"max_alive", sim.flakes().max_alive},
                    {"capacity", sim.flakes().capacity()}};
     j["nonfinite"] = sim.nonfinite_count();
     j["counters"] = {{"landed", c.landed},
@@ -40,11 +41,12 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
                      {"occlusion_refreshes", c.occlusion_refreshes}};
     auto systems = nlohmann::ordered_json::array();
     for (const SystemStats& s : sim.schedule().stats()) {
-        systems.push_back({{"name", s.name},
-                           {"calls", s.calls},
-                           {"skipped", s.skipped},
-                           {"total_ms", s.total_ms},
-                           {"ms_per_call", s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0}});
+        systems.push_back(
+            {{"name", s.name},
+             {"calls", s.calls},
+             {"skipped", s.skipped},
+             {"total_ms", s.total_ms},
+             {"ms_per_call", s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0}});
     }
     j["systems"] = systems;
     j["wall_ms"] = info.wall_ms;

@@ -24,11 +24,15 @@ auto through_facade(const std::string& prefix, Fn&& fn) {
 
 /// Rejects surfaces whose grid is too fine for their node, before any memory
 /// is spent on them; the facade's own checks handle the remaining values.
-void check_surface_cells(const SurfaceDef& d, const std::string& path, std::uint64_t& total) {
+/// `scale` is the cell_scale override already applied to d.cell (1 if none).
+void check_surface_cells(const SurfaceDef& d, const std::string& path, float scale,
+                         std::uint64_t& total) {
     if (!(std::isfinite(d.cell) && d.cell > 0.0f)) {
         return; // the facade names "surface.cell must be > 0"
     }
-    const std::string field = path + ".surface.cell";
+    const std::string field =
+        path + ".surface.cell" +
+        (scale == 1.0f ? "" : " (times the cell_scale override " + number_text(scale) + ")");
     std::uint64_t cells = 1;
     for (const float size : {d.size_x, d.size_z}) {
         const double per_side = std::round(static_cast<double>(size) / d.cell);
@@ -150,7 +154,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if (role.surface) {
             surfaces[i] = surface_over(*role.surface, node.bounds);
             surfaces[i]->cell *= o.cell_scale.value_or(1.0f);
-            check_surface_cells(*surfaces[i], path, total_cells);
+            check_surface_cells(*surfaces[i], path, o.cell_scale.value_or(1.0f), total_cells);
         }
     }
 

@@ -49,7 +49,8 @@ snow::GameOptions parse(int argc, char** argv) {
             const std::string_view v = args.value();
             const std::size_t x = v.find('x');
             if (x == std::string_view::npos) {
-                throw UsageError{"--size: expected WxH, e.g. 1280x720, got '" + std::string(v) + "'"};
+                throw UsageError{"--size: expected WxH, e.g. 1280x720, got '" + std::string(v) +
+                                 "'"};
             }
             o.width = static_cast<int>(parse_uint(f, v.substr(0, x), 16, 8192));
             o.height = static_cast<int>(parse_uint(f, v.substr(x + 1), 16, 8192));
@@ -57,7 +58,8 @@ snow::GameOptions parse(int argc, char** argv) {
             const std::string_view q = args.value();
             const auto i = snow::find_quality(q);
             if (!i) {
-                throw UsageError{"--quality: expected low, medium or high, got '" + std::string(q) + "'"};
+                throw UsageError{"--quality: expected low, medium or high, got '" + std::string(q) +
+                                 "'"};
             }
             o.quality = *i;
         } else if (f == "--warmup") {

@@ -87,10 +87,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "snow_run: %s\n", e.message.c_str());
         return 2;
     }
-    snow::SceneLoadResult scene =
-        opt.scene ? snow::load_scene_file(*opt.scene, opt.overrides)
-                  : snow::load_scene_memory(snow::builtin_village_gltf(), "builtin:village",
-                                            opt.overrides);
+    snow::SceneLoadResult scene = opt.scene
+                                      ? snow::load_scene_file(*opt.scene, opt.overrides)
+                                      : snow::load_scene_memory(snow::builtin_village_gltf(),
+                                                                "builtin:village", opt.overrides);
     if (!scene.sim) {
         std::fprintf(stderr, "snow_run: %s\n", scene.error.c_str());
         return 2;
@@ -112,7 +112,8 @@ int main(int argc, char** argv) {
         const auto t1 = std::chrono::steady_clock::now();
         const snow::RunInfo info{scene.name, opt.ticks,
                                  std::chrono::duration<double, std::milli>(t1 - t0).count()};
-        std::cout << (opt.json ? snow::run_report_json(sim, info) : snow::run_report_text(sim, info))
+        std::cout << (opt.json ? snow::run_report_json(sim, info)
+                               : snow::run_report_text(sim, info))
                   << std::endl;
         return sim.mass().balanced() && sim.nonfinite_count() == 0 ? 0 : 1;
     } catch (const std::exception& e) {

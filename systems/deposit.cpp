@@ -74,9 +74,19 @@ struct BinGrid {
 /// A coarse XZ grid: each bin lists the surfaces overlapping it and the
 /// highest y at which a flake over it can still land, so a flake far above
 /// every surface costs one lookup.
+///
+/// Under a raised surface (a roof over the ground) the bin's highest y is the
+/// roof's, yet a flake between the ground and the roof, not crossing the roof
+/// this tick, can land on neither (flakes sliding down walls, seed 002 §4).
+/// Two scene-wide heights exclude it: every flake that lands on the lowest
+/// surface of its bin is at or below `floor_top`; every flake that lands on
+/// another one is, now or a tick ago, at or above `upper_bare`.
 struct DepositScratch {
     std::vector<SurfaceKey> keys;
     std::vector<std::int64_t> bounds; ///< level_bound per surface when bin_top was built
+    std::vector<float> min_bare;      ///< lowest bare top (m) per surface
+    float floor_top = 0.0f;  ///< max over bins: highest y landing on the bin's lowest surface
+    float upper_bare = 0.0f; ///< min over bins: lowest bare top of the others, less tolerance
     BinGrid grid;
     std::vector<float> bin_top;           ///< -inf where no surface
     std::vector<std::uint32_t> bin_start; ///< bin b lists bin_items[bin_start[b], bin_start[b+1])
@@ -90,6 +100,11 @@ float far_edge(float x0, float cell, std::uint32_t n) {
     const double end = static_cast<double>(x0) + static_cast<double>(cell) * n;
     return static_cast<float>(end + 1.0e-4 * (std::abs(static_cast<double>(x0)) + cell * n) +
                               1.0e-6);
+}
+
+/// Height (m) of `level` on surface s, rounded as find_landing rounds it.
+float level_y(const SnowSurface& s, std::int64_t level) {
+    return static_cast<float>(static_cast<double>(level) * s.unit_height);
 }
 
 void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
@@ -137,9 +152,17 @@ void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     }
     d.bin_top.assign(bins, -std::numeric_limits<float>::infinity());
     d.bounds.assign(surfaces.size(), std::numeric_limits<std::int64_t>::min());
+    // Bare tops are fixed when a surface is made; only snow changes after.
+    d.min_bare.clear();
+    for (const SnowSurface& s : surfaces) {
+        const std::int64_t lowest =
+            s.base_level.empty() ? 0 : *std::min_element(s.base_level.begin(), s.base_level.end());
+        d.min_bare.push_back(level_y(s, lowest));
+    }
 }
 
-/// Raises bin tops to each surface's level_bound (plus tolerance); only when a bound moved.
+/// Raises bin tops to each surface's level_bound (plus tolerance), and
+/// recomputes floor_top and upper_bare; only when a bound moved.
 void refresh_tops(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     bool changed = false;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
@@ -149,14 +172,27 @@ void refresh_tops(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     if (!changed) {
         return;
     }
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    d.floor_top = -inf;
+    d.upper_bare = inf;
     for (std::size_t b = 0; b + 1 < d.bin_start.size(); ++b) {
-        float top = -std::numeric_limits<float>::infinity();
+        float top = -inf;
+        std::uint32_t lowest = d.bin_start[b]; // the item with the lowest bare top (first on ties)
         for (std::uint32_t k = d.bin_start[b]; k < d.bin_start[b + 1]; ++k) {
             const SnowSurface& s = surfaces[d.bin_items[k]];
-            const auto y = static_cast<float>(static_cast<double>(s.level_bound) * s.unit_height);
-            top = std::max(top, y + 2.0f * landing_tolerance);
+            top = std::max(top, level_y(s, s.level_bound) + 2.0f * landing_tolerance);
+            lowest = d.min_bare[d.bin_items[k]] < d.min_bare[d.bin_items[lowest]] ? k : lowest;
         }
         d.bin_top[b] = top;
+        for (std::uint32_t k = d.bin_start[b]; k < d.bin_start[b + 1]; ++k) {
+            const std::uint32_t i = d.bin_items[k];
+            if (k == lowest) {
+                d.floor_top = std::max(d.floor_top, level_y(surfaces[i], surfaces[i].level_bound) +
+                                                        2.0f * landing_tolerance);
+            } else {
+                d.upper_bare = std::min(d.upper_bare, d.min_bare[i] - 2.0f * landing_tolerance);
+            }
+        }
     }
 }
 
@@ -217,8 +253,9 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, La
         const float top = s.top_y(c);
         const auto bare = static_cast<float>(static_cast<double>(s.base_level[c]) * s.unit_height);
         const bool on_top = std::abs(y - top) <= landing_tolerance;
-        const bool from_above =
-            y <= top && (y_prev >= top - landing_tolerance || y >= bare - landing_tolerance);
+        // Reached the top this tick, or started it inside the snow layer (the
+        // snow may have grown over a hovering flake): either way it lands.
+        const bool from_above = y <= top && std::max(y, y_prev) >= bare - landing_tolerance;
         if ((on_top || from_above) && top > best) {
             best = top;
             found = true;
@@ -226,6 +263,14 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, La
         }
     }
     return found;
+}
+
+/// False when a flake at y (y_prev a tick ago, computed as find_landing does)
+/// can land on no surface: above every bin's lowest surface and below every
+/// other bare top, not crossing one (flakes sliding down walls, seed 002 §4).
+/// One read of vy for a flagged flake instead of the surface lookups.
+bool reaches(const DepositScratch& d, float y, float y_prev) {
+    return y <= d.floor_top || y >= d.upper_bare || y_prev >= d.upper_bare;
 }
 
 /// Slots tested per prefilter block (a multiple of 8: flags are scanned 8 at a time).
@@ -243,6 +288,7 @@ void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::si
     const float* __restrict py = p.pool->py.data();
     const float* __restrict pz = p.pool->pz.data();
     const float* __restrict bin_top = d.bin_top.data();
+    const float* vy = p.pool->vy.data();
     alignas(64) std::uint8_t flag[block];
     for (std::size_t base = b; base < e; base += block) {
         const std::size_t m = std::min(block, e - base);
@@ -252,11 +298,23 @@ void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::si
             flag[j] = static_cast<std::uint8_t>(in & (py[base + j] <= bin_top[bin]));
         }
         std::fill(flag + m, flag + block, std::uint8_t{0});
+        // reaches() reads vy, which the pass above did not stream: request the
+        // flagged ones first, so their cache misses overlap.
+        for (std::size_t j = 0; j < m; j += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, flag + j, sizeof word);
+            for (; word != 0; word &= word - 1) {
+                __builtin_prefetch(vy + base + j + std::countr_zero(word) / 8);
+            }
+        }
         for (std::size_t j = 0; j < m; j += 8) {
             std::uint64_t word = 0;
             std::memcpy(&word, flag + j, sizeof word);
             for (; word != 0; word &= word - 1) {
                 const auto slot = static_cast<std::uint32_t>(base + j + std::countr_zero(word) / 8);
+                if (!reaches(d, py[slot], py[slot] - vy[slot] * p.dt)) {
+                    continue;
+                }
                 std::uint32_t bin = 0;
                 LandingRecord rec{};
                 if (p.pool->mass_units[slot] != 0 && g.bin_of(px[slot], pz[slot], bin) &&
@@ -303,8 +361,9 @@ void deposit_system(World& w) {
     if (d == nullptr) {
         d = &w.set_resource<DepositScratch>();
     }
-    const std::size_t n = pool.capacity();
-    prepare(*d, w, surfaces, JobPool::chunk_count(n, flake_grain));
+    // Buffers for the whole pool (allocated once); work only up to slot_end.
+    prepare(*d, w, surfaces, JobPool::chunk_count(pool.capacity(), flake_grain));
+    const std::size_t n = pool.slot_end;
 
     const DetectPass pass{d, &pool, surfaces.data(), cfg.dt, &d->chunks};
     for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {
@@ -312,8 +371,10 @@ void deposit_system(World& w) {
     });
 
     // Apply in chunk order = slot order: later landings see earlier ones' snow.
-    for (const auto& chunk : d->chunks) {
-        for (const LandingRecord& r : chunk) {
+    // Only this tick's chunks: those past slot_end hold nothing from this tick.
+    const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        for (const LandingRecord& r : d->chunks[c]) {
             SnowSurface& s = surfaces[r.surface];
             const std::size_t dst = roll_target(s, r.cell, {cfg.seed, tick, r.slot, Stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];

@@ -5,9 +5,10 @@
 namespace snow {
 
 void FlakePool::reset(std::uint32_t capacity) {
-    for (auto* v : {&px, &py, &pz, &vx, &vy, &vz, &k_over_m, &size}) {
+    for (auto* v : {&px, &pz, &vx, &vy, &vz, &k_over_m, &size}) {
         v->assign(capacity, 0.0f);
     }
+    py.assign(capacity, parked_y);
     mass_units.assign(capacity, 0);
     free_stack.resize(capacity);
     // Highest slot at the bottom so slot 0 is handed out first.
@@ -16,6 +17,7 @@ void FlakePool::reset(std::uint32_t capacity) {
     }
     alive = 0;
     max_alive = 0;
+    slot_end = 0;
 }
 
 bool FlakePool::acquire(std::uint32_t& slot) {
@@ -26,20 +28,22 @@ bool FlakePool::acquire(std::uint32_t& slot) {
     free_stack.pop_back();
     ++alive;
     max_alive = std::max(max_alive, alive);
+    slot_end = std::max(slot_end, slot + 1);
     return true;
 }
 
 void FlakePool::release(std::uint32_t slot) {
     mass_units[slot] = 0;
     vx[slot] = vy[slot] = vz[slot] = 0.0f;
+    py[slot] = parked_y;
     free_stack.push_back(slot); // capacity was reserved in reset(): no allocation
     --alive;
 }
 
 std::uint64_t FlakePool::airborne_units() const {
     std::uint64_t sum = 0;
-    for (const std::uint32_t m : mass_units) {
-        sum += m;
+    for (std::uint32_t i = 0; i < slot_end; ++i) {
+        sum += mass_units[i];
     }
     return sum;
 }

@@ -5,24 +5,62 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <new>
 #include <vector>
 
 namespace snow {
 
+/// Allocator for the pool's arrays: storage starts on a cache line, so the
+/// SIMD loops of the per-flake systems load whole lines and chunks of
+/// flake_grain slots never share a line with their neighbours.
+template <typename T>
+struct CacheAligned {
+    using value_type = T;
+    static constexpr std::size_t alignment = 64;
+
+    CacheAligned() = default;
+    template <typename U>
+    CacheAligned(const CacheAligned<U>&) noexcept {}
+
+    [[nodiscard]] T* allocate(std::size_t n) {
+        return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{alignment}));
+    }
+    void deallocate(T* p, std::size_t n) noexcept {
+        ::operator delete (p, n * sizeof(T), std::align_val_t{alignment});
+    }
+    template <typename U>
+    bool operator==(const CacheAligned<U>&) const noexcept {
+        return true;
+    }
+};
+
+/// One per-slot array of the pool.
+template <typename T>
+using PoolArray = std::vector<T, CacheAligned<T>>;
+
 /// World resource. Hot arrays (position, velocity, k/m) are read every tick;
 /// cold ones (size, mass) only on spawn, landing and rendering.
-/// A slot is alive iff mass_units[slot] != 0.
+/// A slot is alive iff mass_units[slot] != 0. A free slot's py is parked_y,
+/// so a per-flake prefilter that tests heights against surface tops passes
+/// over free slots without reading their mass (landed flakes would otherwise
+/// lie on the tops they landed on).
 struct FlakePool {
+    static constexpr float parked_y = std::numeric_limits<float>::infinity();
+
     // hot
-    std::vector<float> px, py, pz;
-    std::vector<float> vx, vy, vz;
-    std::vector<float> k_over_m; ///< linear drag coefficient over mass (1/s)
+    PoolArray<float> px, py, pz;
+    PoolArray<float> vx, vy, vz;
+    PoolArray<float> k_over_m; ///< linear drag coefficient over mass (1/s)
     // cold
-    std::vector<std::uint32_t> mass_units; ///< 0 = free slot
-    std::vector<float> size;               ///< diameter (m), for rendering
+    PoolArray<std::uint32_t> mass_units;   ///< 0 = free slot
+    PoolArray<float> size;                 ///< diameter (m), for rendering
     std::vector<std::uint32_t> free_stack; ///< free slots; top = back()
     std::uint32_t alive = 0;
     std::uint32_t max_alive = 0; ///< high-water mark of `alive`
+    /// One past the highest slot ever handed out: every alive slot is below it,
+    /// so per-flake passes stop there instead of at capacity().
+    std::uint32_t slot_end = 0;
 
     /// Allocates all storage once; no allocation happens in a tick afterwards.
     void reset(std::uint32_t capacity);

@@ -30,10 +30,10 @@ struct FogPuff {
 struct Fog {
     FogMode mode = FogMode::exponential;
     glm::vec3 color{0.75f, 0.78f, 0.82f};
-    float density = 0.04f;      ///< exponential: 1/m
+    float density = 0.04f;       ///< exponential: 1/m
     float half_distance = 30.0f; ///< half_life: D (m)
-    float layer_bottom = 0.0f;  ///< layered: density is zero below ..
-    float layer_top = 3.0f;     ///< .. and above
+    float layer_bottom = 0.0f;   ///< layered: density is zero below ..
+    float layer_top = 3.0f;      ///< .. and above
     float layer_density = 0.15f; ///< layered: peak density (1/m)
     std::vector<FogPuff> puffs;
 };

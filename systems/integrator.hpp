@@ -65,10 +65,14 @@ inline constexpr float automatic_limit = 0.5f;
 /// so p − v·dt is where its tick started.
 inline bool moves_by_end_velocity(Integrator kind, float c_dt) {
     switch (kind) {
-    case Integrator::explicit_euler: return c_dt <= explicit_limit;
-    case Integrator::automatic: return c_dt <= automatic_limit;
-    case Integrator::semi_implicit_euler: return true;
-    default: return false;
+    case Integrator::explicit_euler:
+        return c_dt <= explicit_limit;
+    case Integrator::automatic:
+        return c_dt <= automatic_limit;
+    case Integrator::semi_implicit_euler:
+        return true;
+    default:
+        return false;
     }
 }
 

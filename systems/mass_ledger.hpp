@@ -10,9 +10,9 @@ namespace snow {
 /// read from the flake pool and the surfaces, so they cannot drift.
 struct MassLedger {
     std::uint64_t spawned = 0;
-    std::uint64_t removed_bounds = 0; ///< left the simulation box
-    std::uint64_t removed_sphere = 0; ///< eliminated by sphere colliders (seed 002 §4)
-    std::uint64_t removed_bare = 0;   ///< landed on geometry without a snow surface
+    std::uint64_t removed_bounds = 0;  ///< left the simulation box
+    std::uint64_t removed_sphere = 0;  ///< eliminated by sphere colliders (seed 002 §4)
+    std::uint64_t removed_bare = 0;    ///< landed on geometry without a snow surface
     std::uint64_t removed_surface = 0; ///< settled on a surface the embedder removed
     [[nodiscard]] std::uint64_t removed() const {
         return removed_bounds + removed_sphere + removed_bare + removed_surface;

@@ -9,37 +9,40 @@
 // difference: each cell's new level is a convex combination of the old levels
 // around it, so no new maximum or minimum appears, there is no sweep-direction
 // bias, and integer units keep the mass exact.
+//
+// Work follows the snow, not the surface: the grid is cut into 8×8 tiles and
+// each step evaluates, per tile, only the box of cells whose inputs changed in
+// the last step (changed cells and their neighbours) or that still send snow.
+// Scattered landings therefore cost per landing, and a pile costs by the area
+// it spreads over, whatever the surface's size (issue #8).
+#include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace snow {
 
 namespace {
 
-/// Sub-iterations per surface per tick; a pile still moving after that keeps
-/// its dirty rectangle and continues next tick.
-constexpr int max_iterations = 64;
 /// Largest share of a height difference one edge may carry per step (1/8):
 /// four edges then move at most half a cell's difference, so the update is
 /// monotone (no checkerboard oscillation) as well as bounded.
 constexpr std::int64_t edge_divisor = 8;
+/// Tiles are 2^tile_shift cells on a side.
+constexpr std::uint32_t tile_shift = 3;
+constexpr std::uint32_t tile_cells = 1u << tile_shift;
 
 __extension__ using wide = __int128; // q·d products of 50-bit levels
 
-/// Inclusive cell rectangle; empty when x0 > x1.
-struct Rect {
+/// Inclusive cell box, in surface coordinates; empty when x0 > x1.
+struct Box {
     std::uint32_t x0 = 1, z0 = 1, x1 = 0, z1 = 0;
     [[nodiscard]] bool empty() const { return x0 > x1 || z0 > z1; }
-    [[nodiscard]] std::uint32_t width() const { return x1 - x0 + 1; }
-    /// This rectangle grown by one cell, clipped to an nx × nz grid.
-    [[nodiscard]] Rect grown(std::uint32_t nx, std::uint32_t nz) const {
-        return {x0 > 0 ? x0 - 1 : 0, z0 > 0 ? z0 - 1 : 0, std::min(x1 + 1, nx - 1),
-                std::min(z1 + 1, nz - 1)};
-    }
     void include(std::uint32_t x, std::uint32_t z) {
         if (empty()) {
             *this = {x, z, x, z};
@@ -50,18 +53,107 @@ struct Rect {
         z0 = std::min(z0, z);
         z1 = std::max(z1, z);
     }
+    void include(const Box& b) {
+        if (!b.empty()) {
+            include(b.x0, b.z0);
+            include(b.x1, b.z1);
+        }
+    }
 };
 
-/// World resource: the net change per cell of one step (the second buffer),
-/// sized to the largest surface once.
+/// A tile and the cells of it one step evaluates.
+struct TileWork {
+    std::uint32_t tile;
+    Box cells;
+};
+
+/// World resource, sized to the largest surface once (no allocation in a
+/// steady tick). Between steps `delta` is all zero and `box` all empty.
 struct RedistributeScratch {
-    std::vector<std::int64_t> delta;
+    std::vector<std::int64_t> delta;          ///< net change per cell of one step
+    std::vector<Box> box;                     ///< per tile: cells to evaluate next step
+    std::vector<std::uint8_t> touched;        ///< per tile: listed in touched_tiles
+    std::vector<TileWork> active;             ///< this step's work
+    std::vector<std::uint32_t> next;          ///< tiles with a non-empty box
+    std::vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
+    std::vector<std::uint8_t> row_flags;      ///< scan_rect: cells of one row that may send
+
+    void fit(std::size_t cells, std::size_t tiles) {
+        if (delta.size() < cells) {
+            delta.resize(cells, 0);
+        }
+        if (box.size() < tiles) {
+            box.resize(tiles);
+            touched.resize(tiles, 0);
+            active.reserve(tiles);
+            next.reserve(tiles);
+            touched_tiles.reserve(tiles);
+        }
+    }
+    void fit_row(std::size_t nx) {
+        if (row_flags.size() < nx) {
+            row_flags.resize(nx);
+        }
+    }
 };
 
-/// Flows out of cell (ix, iz) for one step, added to `delta` (indexed over
-/// rect `wr`); returns the units it sends. Reads only `s` (the old levels).
-std::int64_t cell_outflow(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, const Rect& wr,
-                          std::int64_t* delta) {
+/// Tile bookkeeping of one surface for one tick.
+struct TileGrid {
+    const SnowSurface& s;
+    RedistributeScratch& r;
+    std::uint32_t tx; ///< tiles per row
+
+    [[nodiscard]] std::uint32_t tile_of(std::uint32_t ix, std::uint32_t iz) const {
+        return (iz >> tile_shift) * tx + (ix >> tile_shift);
+    }
+    /// Cell (ix, iz) is evaluated next step.
+    void want(std::uint32_t ix, std::uint32_t iz) {
+        const std::uint32_t t = tile_of(ix, iz);
+        if (r.box[t].empty()) {
+            r.next.push_back(t);
+        }
+        r.box[t].include(ix, iz);
+    }
+    /// Cell (ix, iz) changed: it and its neighbours see new inputs next step.
+    void changed(std::uint32_t ix, std::uint32_t iz) {
+        want(ix, iz);
+        if (ix > 0) {
+            want(ix - 1, iz);
+        }
+        if (ix + 1 < s.nx) {
+            want(ix + 1, iz);
+        }
+        if (iz > 0) {
+            want(ix, iz - 1);
+        }
+        if (iz + 1 < s.nz) {
+            want(ix, iz + 1);
+        }
+    }
+    void touch(std::size_t cell) {
+        const std::uint32_t t = tile_of(static_cast<std::uint32_t>(cell % s.nx),
+                                        static_cast<std::uint32_t>(cell / s.nx));
+        if (r.touched[t] == 0) {
+            r.touched[t] = 1;
+            r.touched_tiles.push_back(t);
+        }
+    }
+    /// Moves the next-step boxes into `active` (emptying them).
+    void take_next() {
+        r.active.clear();
+        for (const std::uint32_t t : r.next) {
+            r.active.push_back({t, r.box[t]});
+            r.box[t] = Box{};
+        }
+        r.next.clear();
+    }
+};
+
+/// Flows out of cell (ix, iz) for one step, added to `delta` (indexed by
+/// cell); returns the units it sends and touches the cells it writes.
+/// Reads only `s` (the old levels).
+std::int64_t cell_outflow(TileGrid& g, std::uint32_t ix, std::uint32_t iz) {
+    const SnowSurface& s = g.s;
     const std::size_t c = s.index(ix, iz);
     const std::int64_t have = s.snow[c];
     if (have == 0) {
@@ -107,45 +199,117 @@ std::int64_t cell_outflow(const SnowSurface& s, std::uint32_t ix, std::uint32_t 
     if (total == 0) {
         return 0;
     }
-    const std::uint32_t w = wr.width();
-    auto at = [&](std::size_t cell) {
-        const auto x = static_cast<std::uint32_t>(cell % s.nx) - wr.x0;
-        const auto z = static_cast<std::uint32_t>(cell / s.nx) - wr.z0;
-        return static_cast<std::size_t>(z) * w + x;
-    };
-    delta[at(c)] -= total;
+    std::int64_t* delta = g.r.delta.data();
+    delta[c] -= total;
+    g.touch(c);
     for (std::uint32_t k = 0; k < n; ++k) {
-        delta[at(nb[k])] += f[k];
+        delta[nb[k]] += f[k];
+        g.touch(nb[k]);
     }
     return total;
 }
 
-/// One Jacobi step over the cells of `active`; returns the cells that changed.
-Rect smooth_step(SnowSurface& s, const Rect& active, std::vector<std::int64_t>& delta) {
-    const Rect wr = active.grown(s.nx, s.nz);
-    const std::uint32_t w = wr.width();
-    std::fill_n(delta.begin(), static_cast<std::size_t>(w) * (wr.z1 - wr.z0 + 1), 0);
-    std::int64_t moved = 0;
-    for (std::uint32_t iz = active.z0; iz <= active.z1; ++iz) {
-        for (std::uint32_t ix = active.x0; ix <= active.x1; ++ix) {
-            moved += cell_outflow(s, ix, iz, wr, delta.data());
-        }
-    }
-    Rect changed;
-    if (moved == 0) {
-        return changed;
-    }
-    for (std::uint32_t iz = wr.z0; iz <= wr.z1; ++iz) {
-        for (std::uint32_t ix = wr.x0; ix <= wr.x1; ++ix) {
-            const std::int64_t dv = delta[static_cast<std::size_t>(iz - wr.z0) * w + (ix - wr.x0)];
-            if (dv != 0) {
-                std::uint32_t& cell = s.snow[s.index(ix, iz)];
-                cell = static_cast<std::uint32_t>(cell + dv);
-                changed.include(ix, iz);
+/// Applies and clears the deltas of one tile; changed cells schedule
+/// themselves and their neighbours for the next step.
+void apply_tile(TileGrid& g, SnowSurface& s, std::uint32_t t) {
+    const std::uint32_t bx = (t % g.tx) << tile_shift;
+    const std::uint32_t bz = (t / g.tx) << tile_shift;
+    const std::uint32_t ex = std::min(bx + tile_cells, s.nx);
+    const std::uint32_t ez = std::min(bz + tile_cells, s.nz);
+    std::int64_t* delta = g.r.delta.data();
+    for (std::uint32_t iz = bz; iz < ez; ++iz) {
+        for (std::uint32_t ix = bx; ix < ex; ++ix) {
+            const std::size_t c = s.index(ix, iz);
+            if (delta[c] != 0) {
+                s.snow[c] = static_cast<std::uint32_t>(s.snow[c] + delta[c]);
+                delta[c] = 0;
+                g.changed(ix, iz);
             }
         }
     }
-    return changed;
+}
+
+/// Second half of a step: applies the deltas of every touched tile.
+void apply_touched(TileGrid& g, SnowSurface& s) {
+    for (const std::uint32_t t : g.r.touched_tiles) {
+        g.r.touched[t] = 0;
+        apply_tile(g, s, t);
+    }
+    g.r.touched_tiles.clear();
+}
+
+/// A cell that sent snow stays wanted (it may still have excess), so no
+/// flowing cell is ever dropped; when nothing moved, nothing is wanted.
+void visit(TileGrid& g, std::uint32_t ix, std::uint32_t iz) {
+    if (cell_outflow(g, ix, iz) > 0) {
+        g.want(ix, iz);
+    }
+}
+
+/// One Jacobi step over the boxes wanted by the previous step.
+void smooth_step(TileGrid& g, SnowSurface& s) {
+    g.take_next();
+    for (const TileWork& w : g.r.active) {
+        for (std::uint32_t iz = w.cells.z0; iz <= w.cells.z1; ++iz) {
+            for (std::uint32_t ix = w.cells.x0; ix <= w.cells.x1; ++ix) {
+                visit(g, ix, iz);
+            }
+        }
+    }
+    apply_touched(g, s);
+}
+
+/// Flags the interior cells x0..x1 of row iz (1 <= x0, x1 + 1 < nx,
+/// 0 < iz < nz - 1) that hold snow and exceed the cap: the only ones
+/// cell_outflow can move. Branch-free over plain arrays, so it vectorises.
+void flag_row(const SnowSurface& s, std::uint32_t iz, std::uint32_t x0, std::uint32_t x1,
+              std::uint8_t* __restrict flags) {
+    const std::size_t row = s.index(0, iz);
+    const std::int64_t* base = s.base_level.data();
+    const std::uint32_t* snow = s.snow.data();
+    const std::size_t nx = s.nx;
+    const std::int64_t limit = s.laplacian_limit_units;
+    for (std::size_t ix = x0; ix <= x1; ++ix) {
+        const std::size_t c = row + ix;
+        const std::int64_t h = base[c] + snow[c];
+        const std::int64_t around = (base[c - 1] + snow[c - 1]) + (base[c + 1] + snow[c + 1]) +
+                                    (base[c - nx] + snow[c - nx]) + (base[c + nx] + snow[c + nx]);
+        flags[ix] = (snow[c] != 0) & (4 * h - around > limit);
+    }
+}
+
+/// The first step of a tick, over the whole marked rectangle `b`: a
+/// vectorised scan finds the interior cells that can send snow, so a large
+/// rectangle with few such cells (scattered landings) costs one pass.
+void scan_step(TileGrid& g, SnowSurface& s, const Box& b) {
+    std::uint8_t* flags = g.r.row_flags.data();
+    for (std::uint32_t iz = b.z0; iz <= b.z1; ++iz) {
+        const bool edge_row = iz == 0 || iz + 1 == s.nz;
+        const std::uint32_t x0 = std::max(b.x0, 1u);
+        const std::uint32_t x1 = std::min(b.x1, s.nx - 2);
+        if (edge_row || s.nx < 3 || x0 > x1) {
+            for (std::uint32_t ix = b.x0; ix <= b.x1; ++ix) {
+                visit(g, ix, iz);
+            }
+            continue;
+        }
+        if (b.x0 < x0) {
+            visit(g, b.x0, iz); // column 0
+        }
+        flag_row(s, iz, x0, x1, flags);
+        // Eight flags per word: a row with nothing to move costs a few tests.
+        for (std::uint32_t j = x0; j <= x1; j += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, flags + j, std::min<std::uint32_t>(8, x1 + 1 - j));
+            for (; word != 0; word &= word - 1) {
+                visit(g, j + static_cast<std::uint32_t>(std::countr_zero(word)) / 8, iz);
+            }
+        }
+        if (b.x1 > x1) {
+            visit(g, b.x1, iz); // column nx - 1
+        }
+    }
+    apply_touched(g, s);
 }
 
 } // namespace
@@ -153,6 +317,9 @@ Rect smooth_step(SnowSurface& s, const Rect& active, std::vector<std::int64_t>& 
 void redistribute_system(World& w) {
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& counters = w.resource<SimCounters>();
+    // Sub-iterations per surface per tick; a pile still moving after that
+    // keeps its dirty rectangle and continues next tick.
+    const std::uint32_t max_iterations = w.resource<SimConfig>().smoothing_iterations;
     auto* scratch = w.try_resource<RedistributeScratch>();
     if (scratch == nullptr) {
         scratch = &w.set_resource<RedistributeScratch>();
@@ -161,21 +328,35 @@ void redistribute_system(World& w) {
         if (s.dirty_empty() || s.nx == 0 || s.nz == 0) {
             continue;
         }
-        if (scratch->delta.size() < s.cell_count()) {
-            scratch->delta.resize(s.cell_count()); // once per larger surface (warm-up)
-        }
-        // Cells whose cap may now fail: the changed ones and their neighbours.
-        Rect changed{s.dirty_x0, s.dirty_z0, std::min(s.dirty_x1, s.nx - 1),
-                     std::min(s.dirty_z1, s.nz - 1)};
-        for (int it = 0; it < max_iterations && !changed.empty(); ++it) {
+        const std::uint32_t tx = (s.nx + tile_cells - 1) >> tile_shift;
+        const std::uint32_t tz = (s.nz + tile_cells - 1) >> tile_shift;
+        // once per larger surface
+        scratch->fit(s.cell_count(), static_cast<std::size_t>(tx) * tz);
+        scratch->fit_row(s.nx);
+        TileGrid g{s, *scratch, tx};
+        // Cells whose cap may now fail: the marked ones and their neighbours.
+        const std::uint32_t x1 = std::min(s.dirty_x1, s.nx - 1);
+        const std::uint32_t z1 = std::min(s.dirty_z1, s.nz - 1);
+        ++counters.smoothing_iterations;
+        scan_step(g, s,
+                  {s.dirty_x0 > 0 ? s.dirty_x0 - 1 : 0, s.dirty_z0 > 0 ? s.dirty_z0 - 1 : 0,
+                   std::min(x1 + 1, s.nx - 1), std::min(z1 + 1, s.nz - 1)});
+        for (std::uint32_t it = 1; it < max_iterations && !scratch->next.empty(); ++it) {
             ++counters.smoothing_iterations;
-            changed = smooth_step(s, changed.grown(s.nx, s.nz), scratch->delta);
+            smooth_step(g, s);
         }
-        // Flows never raise the highest level, so level_bound stays valid.
-        s.dirty_x0 = changed.x0;
-        s.dirty_z0 = changed.z0;
-        s.dirty_x1 = changed.x1;
-        s.dirty_z1 = changed.z1;
+        // Still moving after the cap: the wanted cells carry over as the dirty
+        // rectangle. Flows never raise the highest level, so level_bound stays valid.
+        Box left;
+        for (const std::uint32_t t : scratch->next) {
+            left.include(scratch->box[t]);
+            scratch->box[t] = Box{};
+        }
+        scratch->next.clear();
+        s.dirty_x0 = left.x0;
+        s.dirty_z0 = left.z0;
+        s.dirty_x1 = left.x1;
+        s.dirty_z1 = left.z1;
     }
 }
 

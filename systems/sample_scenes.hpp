@@ -17,9 +17,9 @@ struct YardOptions {
     Integrator integrator = Integrator::explicit_euler;
     std::uint32_t ground_cells = 128; ///< ground surface is ground_cells² cells
     std::uint32_t max_flakes = 20000;
-    float emitter_rate = 3000.0f;     ///< flakes per second; 0 = no emitter
+    float emitter_rate = 3000.0f; ///< flakes per second; 0 = no emitter
     bool wind = true;
-    std::uint32_t prefill = 0;        ///< flakes placed airborne before tick 0
+    std::uint32_t prefill = 0; ///< flakes placed airborne before tick 0
 };
 
 /// A 16 m × 16 m yard: ground surface, a garage box with a snow-holding flat

@@ -17,10 +17,11 @@ void throw_if(const std::string& error) {
     }
 }
 
-bool flakes_alive(const World& w) { return w.resource<FlakePool>().alive > 0; }
+bool flakes_alive(const World& w) {
+    return w.resource<FlakePool>().alive > 0;
+}
 
 } // namespace
-
 
 Simulation::Simulation(const SimConfig& config) {
     throw_if(validate(config));
@@ -50,7 +51,9 @@ void Simulation::build_schedule() {
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
 }
 
-void Simulation::bump_geometry() { ++world_.resource<GeometryVersion>().version; }
+void Simulation::bump_geometry() {
+    ++world_.resource<GeometryVersion>().version;
+}
 
 Entity Simulation::add_emitter(const Emitter& e) {
     throw_if(validate(e));
@@ -64,7 +67,9 @@ void Simulation::set_wind(const Wind& w) {
     world_.set_resource<Wind>(w);
 }
 
-void Simulation::clear_wind() { world_.erase_resource<Wind>(); }
+void Simulation::clear_wind() {
+    world_.erase_resource<Wind>();
+}
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null() && !world_.alive(owner)) {
@@ -171,7 +176,12 @@ void Simulation::remove(Entity e) {
     bump_geometry();
 }
 
-void Simulation::set_integrator(Integrator i) { world_.resource<SimConfig>().integrator = i; }
+void Simulation::set_integrator(Integrator i) {
+    SimConfig c = world_.resource<SimConfig>();
+    c.integrator = i;
+    throw_if(validate(c)); // an unknown value would match no rule and freeze every flake
+    world_.resource<SimConfig>().integrator = i;
+}
 
 void Simulation::tick() {
     schedule_.run(world_);

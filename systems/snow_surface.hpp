@@ -14,15 +14,15 @@ namespace snow {
 
 /// Settings to create a surface; see make_surface().
 struct SurfaceDef {
-    float x0 = 0.0f, z0 = 0.0f; ///< world position of the grid corner (min x, min z)
+    float x0 = 0.0f, z0 = 0.0f;         ///< world position of the grid corner (min x, min z)
     float size_x = 1.0f, size_z = 1.0f; ///< extent (m)
-    float cell = 0.05f;         ///< cell edge (m)
-    float base_y = 0.0f;        ///< height of the bare top for a flat surface (m)
-    float slope_x = 0.0f;       ///< d(base)/dx, for tilted tops (m/m)
-    float slope_z = 0.0f;       ///< d(base)/dz
-    float edge_limit = 0.1f;    ///< snow depth (m) at an edge above which excess spills
-    bool spills = true;         ///< false for the ground: its edges keep their snow
-    float laplacian_limit = 20.0f; ///< cap on |∇²h| (1/m), seed 002 §3
+    float cell = 0.05f;                 ///< cell edge (m)
+    float base_y = 0.0f;                ///< height of the bare top for a flat surface (m)
+    float slope_x = 0.0f;               ///< d(base)/dx, for tilted tops (m/m)
+    float slope_z = 0.0f;               ///< d(base)/dz
+    float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
+    bool spills = true;                 ///< false for the ground: its edges keep their snow
+    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), seed 002 §3
 };
 
 /// Largest grid a surface may have (cells per side); larger is an input error.
@@ -33,7 +33,7 @@ inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
 struct SnowSurface {
     float x0 = 0.0f, z0 = 0.0f, cell = 0.05f;
     std::uint32_t nx = 0, nz = 0;
-    float unit_height = 0.0f;            ///< metres of snow one unit adds to a cell
+    float unit_height = 0.0f;             ///< metres of snow one unit adds to a cell
     std::vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
     std::vector<std::uint32_t> snow;      ///< settled units per cell (row-major, x fastest)
     std::uint32_t edge_limit_units = 0;

@@ -47,12 +47,12 @@ Aabb spawn_region(const World& w, const Aabb& bounds) {
         }
         // The bare top is a plane: its lowest point is at a corner cell.
         const std::size_t last_x = s.nx - 1, last_z = s.nz - 1;
-        for (const std::size_t i : {s.index(0, 0), s.index(static_cast<std::uint32_t>(last_x), 0),
-                                    s.index(0, static_cast<std::uint32_t>(last_z)),
-                                    s.index(static_cast<std::uint32_t>(last_x),
-                                            static_cast<std::uint32_t>(last_z))}) {
-            ground = std::min(ground, static_cast<float>(static_cast<double>(s.base_level[i]) *
-                                                         s.unit_height));
+        for (const std::size_t i :
+             {s.index(0, 0), s.index(static_cast<std::uint32_t>(last_x), 0),
+              s.index(0, static_cast<std::uint32_t>(last_z)),
+              s.index(static_cast<std::uint32_t>(last_x), static_cast<std::uint32_t>(last_z))}) {
+            ground = std::min(
+                ground, static_cast<float>(static_cast<double>(s.base_level[i]) * s.unit_height));
             any = true;
         }
     });
@@ -70,16 +70,23 @@ glm::vec3 point_on_face(const Aabb& b, int face, float u, float v) {
     const float x = lo.x + (hi.x - lo.x) * u, y = lo.y + (hi.y - lo.y) * v;
     const float z_from_u = lo.z + (hi.z - lo.z) * u, z_from_v = lo.z + (hi.z - lo.z) * v;
     switch (face) {
-    case 0: return {x, hi.y, z_from_v};
-    case 1: return {lo.x, y, z_from_u};
-    case 2: return {hi.x, y, z_from_u};
-    case 3: return {x, y, lo.z};
-    default: return {x, y, hi.z};
+    case 0:
+        return {x, hi.y, z_from_v};
+    case 1:
+        return {lo.x, y, z_from_u};
+    case 2:
+        return {hi.x, y, z_from_u};
+    case 3:
+        return {x, y, lo.z};
+    default:
+        return {x, y, hi.z};
     }
 }
 
 /// Log-uniform in [lo, hi]: many small flakes, few heavy ones.
-float log_uniform(float lo, float hi, float u) { return lo * std::pow(hi / lo, u); }
+float log_uniform(float lo, float hi, float u) {
+    return lo * std::pow(hi / lo, u);
+}
 
 } // namespace
 

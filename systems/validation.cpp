@@ -12,7 +12,9 @@
 namespace snow {
 
 namespace {
-bool power_of_two(std::uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
+bool power_of_two(std::uint32_t v) {
+    return v != 0 && (v & (v - 1)) == 0;
+}
 } // namespace
 
 std::string validate(const SimConfig& c) {
@@ -22,14 +24,25 @@ std::string validate(const SimConfig& c) {
     check::finite3(e, "simulation.gravity", c.gravity);
     check::finite3(e, "simulation.bounds.min", c.bounds.min);
     check::finite3(e, "simulation.bounds.max", c.bounds.max);
-    check::ordered(e, "simulation.bounds.min.x", c.bounds.min.x, "simulation.bounds.max.x", c.bounds.max.x);
-    check::ordered(e, "simulation.bounds.min.y", c.bounds.min.y, "simulation.bounds.max.y", c.bounds.max.y);
-    check::ordered(e, "simulation.bounds.min.z", c.bounds.min.z, "simulation.bounds.max.z", c.bounds.max.z);
+    check::ordered(e, "simulation.bounds.min.x", c.bounds.min.x, "simulation.bounds.max.x",
+                   c.bounds.max.x);
+    check::ordered(e, "simulation.bounds.min.y", c.bounds.min.y, "simulation.bounds.max.y",
+                   c.bounds.max.y);
+    check::ordered(e, "simulation.bounds.min.z", c.bounds.min.z, "simulation.bounds.max.z",
+                   c.bounds.max.z);
     check::at_most(e, "simulation.max_flakes", c.max_flakes, 16u << 20);
     if (c.threads == 0) {
         check::fail(e, "simulation.threads", ">= 1", 0);
     }
     check::at_most(e, "simulation.threads", c.threads, 256);
+    if (c.smoothing_iterations == 0) {
+        check::fail(e, "simulation.smoothing_iterations", ">= 1", 0);
+    }
+    check::at_most(e, "simulation.smoothing_iterations", c.smoothing_iterations, 4096);
+    if (integrator_name(c.integrator) == "unknown") {
+        check::fail(e, "simulation.integrator", "one of euler, semi_implicit, exponential, rk4, auto",
+                    static_cast<double>(c.integrator));
+    }
     return e;
 }
 

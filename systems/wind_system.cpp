@@ -17,8 +17,9 @@ void wind_system(World& w) {
 
     glm::vec3 dev = wind.deviation;
     const float base_speed = std::sqrt(wind.base.x * wind.base.x + wind.base.z * wind.base.z);
-    const glm::vec3 base_dir =
-        base_speed > 0.0f ? glm::vec3(wind.base.x, 0.0f, wind.base.z) / base_speed : glm::vec3(0.0f);
+    const glm::vec3 base_dir = base_speed > 0.0f
+                                   ? glm::vec3(wind.base.x, 0.0f, wind.base.z) / base_speed
+                                   : glm::vec3(0.0f);
 
     // Uniform steps of unit variance (±√3), scaled by walk·√dt: a Wiener-like walk.
     const float step = wind.walk * std::sqrt(cfg.dt) * 1.7320508f;

@@ -51,13 +51,12 @@ int main() {
         std::printf("embed_snow: %llu ticks, %u flakes airborne, deepest snow %.4f m\n",
                     static_cast<unsigned long long>(sim.tick_count()), sim.flakes().alive,
                     static_cast<double>(deepest));
-        std::printf("embed_snow: mass units spawned %llu = airborne %llu + settled %llu + "
-                    "removed %llu, state hash %016llx\n",
-                    static_cast<unsigned long long>(m.spawned),
-                    static_cast<unsigned long long>(m.airborne),
-                    static_cast<unsigned long long>(m.settled),
-                    static_cast<unsigned long long>(m.removed),
-                    static_cast<unsigned long long>(sim.state_hash()));
+        std::printf(
+            "embed_snow: mass units spawned %llu = airborne %llu + settled %llu + "
+            "removed %llu, state hash %016llx\n",
+            static_cast<unsigned long long>(m.spawned), static_cast<unsigned long long>(m.airborne),
+            static_cast<unsigned long long>(m.settled), static_cast<unsigned long long>(m.removed),
+            static_cast<unsigned long long>(sim.state_hash()));
         if (!m.balanced() || m.settled == 0) {
             std::fprintf(stderr, "embed_snow: unexpected mass report\n");
             return 1;

@@ -20,7 +20,7 @@ TEST(EcsWorld, CreateDestroyReuseBumpsGeneration) {
     w.destroy(a);
     EXPECT_FALSE(w.alive(a));
     const Entity c = w.create();
-    EXPECT_EQ(c.index(), a.index()); // slot reused ...
+    EXPECT_EQ(c.index(), a.index());           // slot reused ...
     EXPECT_NE(c.generation(), a.generation()); // ... with a new generation
     EXPECT_TRUE(w.alive(c));
     EXPECT_FALSE(w.alive(a));

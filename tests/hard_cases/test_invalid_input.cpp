@@ -212,6 +212,14 @@ TEST(HardCaseInvalidInput, ApiRejectsEveryBadNumberAndLeavesTheStateAlone) {
     // Handles: null, never created.
     EXPECT_THROW(sim->remove(null_entity), SnowError);
     EXPECT_THROW(sim->add_surface(SurfaceDef{}, Entity::make(4000, 3)), SnowError);
+    // An integrator value outside the enum would match no rule and freeze every flake.
+    try {
+        sim->set_integrator(static_cast<Integrator>(200));
+        ADD_FAILURE() << "integrator 200 accepted";
+    } catch (const SnowError& e) {
+        EXPECT_NE(std::string(e.what()).find("simulation.integrator"), std::string::npos)
+            << e.what();
+    }
     EXPECT_EQ(observe(*sim), before);
     EXPECT_GT(rejected, 150);
     RecordProperty("rejected", rejected);
