@@ -60,4 +60,28 @@ void ArgReader::unknown() const {
     throw UsageError{"unknown argument '" + std::string(flag_) + "' (see --help)"};
 }
 
+bool read_override(ArgReader& args, SceneOverrides& o) {
+    const std::string_view f = args.flag();
+    if (f == "--seed") {
+        o.seed = parse_uint(f, args.value(), 0, ~0ull);
+    } else if (f == "--threads") {
+        o.threads = static_cast<unsigned>(parse_uint(f, args.value(), 1, 256));
+    } else if (f == "--dt") {
+        o.dt = static_cast<float>(parse_positive(f, args.value(), 1.0));
+    } else if (f == "--max-flakes") {
+        o.max_flakes = static_cast<std::uint32_t>(parse_uint(f, args.value(), 1, 16u << 20));
+    } else if (f == "--integrator") {
+        const std::string_view name = args.value();
+        const auto i = parse_integrator(name);
+        if (!i) {
+            throw UsageError{"--integrator: unknown '" + std::string(name) +
+                             "' (euler, semi_implicit, exponential, rk4, auto)"};
+        }
+        o.integrator = *i;
+    } else {
+        return false;
+    }
+    return true;
+}
+
 } // namespace snow::cli

@@ -3,6 +3,8 @@
 /// a bad value gives one message naming the flag, never a silent default.
 #pragma once
 
+#include "game/scene_loader.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,5 +39,19 @@ class ArgReader {
     int i_ = 0;
     std::string_view flag_;
 };
+
+/// The simulation flags both apps take (--seed, --threads, --dt, --integrator,
+/// --max-flakes), as their usage lines.
+inline constexpr const char* override_usage =
+    R"(  --seed S            random seed (default: the scene's)
+  --threads T         worker threads, >= 1 (default: the scene's, usually 1)
+  --dt SECONDS        fixed tick length, 0 < dt <= 1 (default: the scene's)
+  --integrator NAME   euler | semi_implicit | exponential | rk4 | auto
+  --max-flakes N      flake pool size, 1 to 16777216 (default: the scene's)
+)";
+
+/// If the current flag is one of override_usage's, reads its value into `o`
+/// and returns true; false for any other flag. Throws UsageError on a bad value.
+[[nodiscard]] bool read_override(ArgReader& args, SceneOverrides& o);
 
 } // namespace snow::cli

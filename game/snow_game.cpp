@@ -9,7 +9,7 @@
 
 namespace {
 
-constexpr const char* usage = R"(usage: snow_game [options]
+constexpr const char* usage_head = R"(usage: snow_game [options]
   --scene FILE        glTF scene (default: the built-in village scene)
   --headless          render without a window (OSMesa) to PNG frames
   --frames N          stop after N frames (headless default 120)
@@ -18,9 +18,9 @@ constexpr const char* usage = R"(usage: snow_game [options]
   --size WxH          window / image size (default 1280x720)
   --quality NAME      low | medium | high (default medium)
   --warmup N          simulate N ticks before the first frame
-  --seed S            random seed (default: the scene's)
-  --threads T         simulation threads (default: the scene's)
-  --inject LIST       scripted keys, e.g. "10:P,20:N,40:ESC" (frame:key)
+)";
+constexpr const char* usage_tail =
+    R"(  --inject LIST       scripted keys, e.g. "10:P,20:N,40:ESC" (frame:key)
   --video             headless: also encode DIR/snow.mp4 if ffmpeg is installed
   --help              this text
 In the window press H for the key list.
@@ -32,8 +32,13 @@ snow::GameOptions parse(int argc, char** argv) {
     ArgReader args(argc, argv);
     while (args.next()) {
         const std::string_view f = args.flag();
+        if (read_override(args, o.overrides)) {
+            continue;
+        }
         if (f == "--help" || f == "-h") {
-            std::fputs(usage, stdout);
+            std::fputs(usage_head, stdout);
+            std::fputs(override_usage, stdout);
+            std::fputs(usage_tail, stdout);
             std::exit(0);
         } else if (f == "--scene") {
             o.scene = std::string(args.value());
@@ -64,10 +69,6 @@ snow::GameOptions parse(int argc, char** argv) {
             o.quality = *i;
         } else if (f == "--warmup") {
             o.warmup_ticks = parse_uint(f, args.value(), 0, 100'000'000);
-        } else if (f == "--seed") {
-            o.overrides.seed = parse_uint(f, args.value(), 0, ~0ull);
-        } else if (f == "--threads") {
-            o.overrides.threads = static_cast<unsigned>(parse_uint(f, args.value(), 1, 256));
         } else if (f == "--inject") {
             try {
                 o.inject = snow::parse_injected_keys(args.value());

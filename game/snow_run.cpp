@@ -14,15 +14,11 @@
 
 namespace {
 
-constexpr const char* usage = R"(usage: snow_run [options]
+constexpr const char* usage_head = R"(usage: snow_run [options]
   --scene FILE        glTF scene (default: the built-in village scene)
   --ticks N           ticks to simulate (default 200)
-  --seed S            random seed (default: the scene's)
-  --threads T         worker threads, >= 1 (default: the scene's, usually 1)
-  --dt SECONDS        fixed tick length, 0 < dt <= 1 (default: the scene's)
-  --integrator NAME   euler | semi_implicit | exponential | rk4 | auto
-  --max-flakes N      flake pool size (default: the scene's)
-  --report json|text  what to print at the end (default text)
+)";
+constexpr const char* usage_tail = R"(  --report json|text  what to print at the end (default text)
   --help              this text
 Exit status: 0 ok, 2 bad arguments or bad scene, 1 other failure.
 )";
@@ -40,30 +36,18 @@ Options parse(int argc, char** argv) {
     ArgReader args(argc, argv);
     while (args.next()) {
         const std::string_view f = args.flag();
+        if (read_override(args, o.overrides)) {
+            continue;
+        }
         if (f == "--help" || f == "-h") {
-            std::fputs(usage, stdout);
+            std::fputs(usage_head, stdout);
+            std::fputs(override_usage, stdout);
+            std::fputs(usage_tail, stdout);
             std::exit(0);
         } else if (f == "--scene") {
             o.scene = std::string(args.value());
         } else if (f == "--ticks") {
             o.ticks = parse_uint(f, args.value(), 0, 1'000'000'000'000ull);
-        } else if (f == "--seed") {
-            o.overrides.seed = parse_uint(f, args.value(), 0, ~0ull);
-        } else if (f == "--threads") {
-            o.overrides.threads = static_cast<unsigned>(parse_uint(f, args.value(), 1, 256));
-        } else if (f == "--dt") {
-            o.overrides.dt = static_cast<float>(parse_positive(f, args.value(), 1.0));
-        } else if (f == "--max-flakes") {
-            o.overrides.max_flakes =
-                static_cast<std::uint32_t>(parse_uint(f, args.value(), 1, 16u << 20));
-        } else if (f == "--integrator") {
-            const std::string_view name = args.value();
-            const auto i = snow::parse_integrator(name);
-            if (!i) {
-                throw UsageError{"--integrator: unknown '" + std::string(name) +
-                                 "' (euler, semi_implicit, exponential, rk4, auto)"};
-            }
-            o.overrides.integrator = *i;
         } else if (f == "--report") {
             const std::string_view r = args.value();
             if (r != "json" && r != "text") {

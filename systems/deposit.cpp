@@ -7,10 +7,12 @@
 // result is the same for any thread count.
 #include "ecs/rng.hpp"
 #include "systems/flake_pool.hpp"
+#include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
+#include "systems/wind.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -229,17 +231,29 @@ struct DetectPass {
     const FlakePool* pool;
     const SnowSurface* surfaces;
     float dt;
+    Integrator integrator;
+    float gravity_y;
+    float wind_y;
     std::vector<std::vector<LandingRecord>>* out;
 };
+
+/// Height at which flake `slot` started this tick: where the integrator
+/// really moved it from (the exact and RK4 rules move by the mean velocity),
+/// as collide's swept tests use it.
+float start_y(const DetectPass& p, std::uint32_t slot) {
+    const FlakePool& f = *p.pool;
+    return integrate::path_start(p.integrator, f.py[slot], f.vy[slot], f.k_over_m[slot],
+                                 p.gravity_y, p.wind_y, p.dt);
+}
 
 /// The surface flake `slot` lands on this tick, if any: it reached the snow
 /// top from above (crossed it this tick, sits on it, or is inside the snow
 /// layer). A flake below a surface's bare top never lands on it. The highest
 /// such surface wins; ties go to the first in pool order.
-bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, LandingRecord& rec) {
+bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, float y_prev,
+                  LandingRecord& rec) {
     const FlakePool& f = *p.pool;
     const float x = f.px[slot], y = f.py[slot], z = f.pz[slot];
-    const float y_prev = y - f.vy[slot] * p.dt;
     float best = -std::numeric_limits<float>::infinity();
     bool found = false;
     for (std::uint32_t k = p.d->bin_start[bin]; k < p.d->bin_start[bin + 1]; ++k) {
@@ -265,7 +279,7 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, La
     return found;
 }
 
-/// False when a flake at y (y_prev a tick ago, computed as find_landing does)
+/// False when a flake at y (y_prev a tick ago, from start_y)
 /// can land on no surface: above every bin's lowest surface and below every
 /// other bare top, not crossing one (flakes sliding down walls, seed 002 §4).
 /// One read of vy for a flagged flake instead of the surface lookups.
@@ -312,13 +326,14 @@ void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::si
             std::memcpy(&word, flag + j, sizeof word);
             for (; word != 0; word &= word - 1) {
                 const auto slot = static_cast<std::uint32_t>(base + j + std::countr_zero(word) / 8);
-                if (!reaches(d, py[slot], py[slot] - vy[slot] * p.dt)) {
+                const float y_prev = start_y(p, slot);
+                if (!reaches(d, py[slot], y_prev)) {
                     continue;
                 }
                 std::uint32_t bin = 0;
                 LandingRecord rec{};
                 if (p.pool->mass_units[slot] != 0 && g.bin_of(px[slot], pz[slot], bin) &&
-                    find_landing(p, bin, slot, rec)) {
+                    find_landing(p, bin, slot, y_prev, rec)) {
                     out.push_back(rec);
                 }
             }
@@ -365,7 +380,15 @@ void deposit_system(World& w) {
     prepare(*d, w, surfaces, JobPool::chunk_count(pool.capacity(), flake_grain));
     const std::size_t n = pool.slot_end;
 
-    const DetectPass pass{d, &pool, surfaces.data(), cfg.dt, &d->chunks};
+    const auto* wind = w.try_resource<Wind>();
+    const DetectPass pass{d,
+                          &pool,
+                          surfaces.data(),
+                          cfg.dt,
+                          cfg.integrator,
+                          cfg.gravity.y,
+                          wind != nullptr ? wind->current.y : 0.0f,
+                          &d->chunks};
     for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {
         detect_chunk(*p, c, b, e);
     });

@@ -30,6 +30,9 @@ std::string validate(const SimConfig& c) {
                    c.bounds.max.y);
     check::ordered(e, "simulation.bounds.min.z", c.bounds.min.z, "simulation.bounds.max.z",
                    c.bounds.max.z);
+    if (c.max_flakes == 0) {
+        check::fail(e, "simulation.max_flakes", ">= 1", 0);
+    }
     check::at_most(e, "simulation.max_flakes", c.max_flakes, 16u << 20);
     if (c.threads == 0) {
         check::fail(e, "simulation.threads", ">= 1", 0);
@@ -40,7 +43,8 @@ std::string validate(const SimConfig& c) {
     }
     check::at_most(e, "simulation.smoothing_iterations", c.smoothing_iterations, 4096);
     if (integrator_name(c.integrator) == "unknown") {
-        check::fail(e, "simulation.integrator", "one of euler, semi_implicit, exponential, rk4, auto",
+        check::fail(e, "simulation.integrator",
+                    "one of euler, semi_implicit, exponential, rk4, auto",
                     static_cast<double>(c.integrator));
     }
     return e;

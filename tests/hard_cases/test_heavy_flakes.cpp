@@ -74,7 +74,7 @@ TEST(HardCaseHeavyFlakes, FiveGramFlakesWithQuarterSecondTicksLandWithExactMass)
         EXPECT_GT(roof.sum, 0u);
         EXPECT_EQ(ground.wrapped + roof.wrapped, 0u);
         // Still air: every flake not in the air has landed; none left the yard.
-        // (Fails while deposit misses flakes the snow grew over: see the next test.)
+        // (Guards against deposit missing flakes the snow grew over: see the next test.)
         EXPECT_EQ(ledger.removed(), 0u)
             << "units that fell through the ground: " << ledger.removed_bounds;
         EXPECT_EQ(ground.sum + roof.sum + sim.mass().airborne, ledger.spawned);

@@ -135,9 +135,9 @@ TEST(HardCaseHurricane, WindStaysBoundedAndFlakesLeaveDownwind) {
     EXPECT_GT(exits[1], ledger.removed_bounds * 85 / 100);
     // The ground still receives snow (flakes spawned on the top face) and keeps it.
     EXPECT_GT(hard::cell_stats(hard::surface(sim, ground_e)).sum, 0u);
-    // Fails while deposit.cpp misses flakes that start a tick inside the snow
-    // layer (HardCaseHeavyFlakes.FlakeInsideTheSnowLayer...): here 3 flakes,
-    // sliding down the garage's face or crossing into a deeper cell at 60 m/s.
+    // Deposit once missed flakes that start a tick inside the snow layer
+    // (HardCaseHeavyFlakes.FlakeInsideTheSnowLayer...): here 3 flakes slid down
+    // the garage's face or crossed into a deeper cell at 60 m/s and fell through.
     EXPECT_EQ(under_ground, 0u) << "units that passed through the ground";
     RecordProperty("spawned", std::to_string(ledger.spawned));
     RecordProperty("removed_bounds", std::to_string(ledger.removed_bounds));

@@ -259,6 +259,15 @@ TEST(HardCaseInvalidInput, BadSimConfigNeverMakesASimulation) {
             }
         }
     }
+    SimConfig no_pool;
+    no_pool.max_flakes = 0; // a pool that can never hold a flake
+    try {
+        Simulation sim(no_pool);
+        ADD_FAILURE() << "max_flakes 0 accepted";
+    } catch (const SnowError& e) {
+        EXPECT_NE(std::string(e.what()).find("simulation.max_flakes"), std::string::npos)
+            << e.what();
+    }
 }
 
 /// A whole file as text.
@@ -400,9 +409,9 @@ TEST(HardCaseInvalidInput, SnowRunSceneWithBadNumberExitsWithStatus2) {
 }
 
 TEST(HardCaseInvalidInput, SnowRunRejectsAZeroFlakePool) {
-    // docs/scenes.md: max_flakes is valid in [1, 16 777 216]; the scene loader
-    // enforces it, but the --max-flakes override accepts 0 and runs a scene that
-    // can never hold a flake (exit 0). Fails until snow_run/validate(SimConfig) check it.
+    // docs/scenes.md: max_flakes is valid in [1, 16 777 216], for the scene
+    // loader, the --max-flakes override and validate(SimConfig) alike: a pool
+    // that can never hold a flake is an error, not an empty run.
     if (!have_snow_run()) {
         GTEST_SKIP() << "snow_run not built (SNOW_BUILD_GAME=OFF)";
     }
