@@ -14,7 +14,9 @@
 #include "systems/wind.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -366,10 +368,21 @@ void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_
     std::uint32_t* slots = c.scratch->slots.data() + chunk * flake_grain;
     Removal* reasons = c.scratch->reasons.data() + chunk * flake_grain;
     flag_chunk(c, b, e, flags);
+    // List the flagged slots, 8 flags per word: most words are zero (flakes
+    // high above everything), so the scan costs a load per 8 slots.
     std::uint32_t candidates = 0;
-    for (std::size_t i = b; i < e; ++i) {
-        slots[candidates] = static_cast<std::uint32_t>(i);
-        candidates += flags[i - b];
+    const std::size_t m = e - b;
+    const std::size_t whole = m & ~std::size_t{7};
+    for (std::size_t j = 0; j < whole; j += 8) {
+        std::uint64_t word = 0;
+        std::memcpy(&word, flags + j, sizeof word);
+        for (; word != 0; word &= word - 1) {
+            slots[candidates++] = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
+        }
+    }
+    for (std::size_t j = whole; j < m; ++j) {
+        slots[candidates] = static_cast<std::uint32_t>(b + j);
+        candidates += flags[j];
     }
     std::uint32_t n = 0;
     for (std::uint32_t k = 0; k < candidates; ++k) {
