@@ -484,22 +484,15 @@ void collide_system(World& w) {
                             : std::numeric_limits<float>::infinity();
     c.scratch = &scratch;
 
-    const std::size_t n = pool.capacity();
-    const auto* jobs = w.try_resource<Jobs>();
-    if (jobs != nullptr && jobs->pool != nullptr) {
-        jobs->pool->parallel_for(n, flake_grain,
-                                 [&c](std::size_t chunk, std::size_t b, std::size_t e) {
-                                     detect_chunk(c, chunk, b, e);
-                                 });
-    } else {
-        for (std::size_t chunk = 0; chunk < scratch.counts.size(); ++chunk) {
-            detect_chunk(c, chunk, chunk * flake_grain, std::min(n, (chunk + 1) * flake_grain));
-        }
-    }
+    // Slots past slot_end were never alive: no work there.
+    const std::size_t n = pool.slot_end;
+    for_chunks(w, n, flake_grain, [p = &c](std::size_t chunk, std::size_t b, std::size_t e) {
+        detect_chunk(*p, chunk, b, e);
+    });
 
     // Sequential, in slot order: the ledger and the free stack see one order.
     auto& ledger = w.resource<MassLedger>();
-    for (std::size_t chunk = 0; chunk < scratch.counts.size(); ++chunk) {
+    for (std::size_t chunk = 0; chunk < JobPool::chunk_count(n, flake_grain); ++chunk) {
         const std::size_t base = chunk * flake_grain;
         for (std::uint32_t k = 0; k < scratch.counts[chunk]; ++k) {
             const std::uint32_t slot = scratch.slots[base + k];
