@@ -41,8 +41,7 @@ struct Field {
             std::copy_n(bare.begin() + static_cast<std::ptrdiff_t>(s.index(cx0, iz)), cx1 - cx0 + 1,
                         s.snow.begin() + static_cast<std::ptrdiff_t>(s.index(cx0, iz)));
         }
-        s.dirty_x0 = s.dirty_z0 = 1;
-        s.dirty_x1 = s.dirty_z1 = 0;
+        s.clear_dirty();
     }
 };
 

@@ -10,19 +10,18 @@
 // around it, so no new maximum or minimum appears, there is no sweep-direction
 // bias, and integer units keep the mass exact.
 //
-// Work follows the snow, not the surface: the grid is cut into 8×8 tiles and
-// each step evaluates, per tile, only the box of cells whose inputs changed in
-// the last step (changed cells and their neighbours) or that still send snow.
-// Scattered landings therefore cost per landing, and a pile costs by the area
-// it spreads over, whatever the surface's size (issue #8).
+// Work follows the snow, not the surface: the grid is cut into 8×8 tiles. The
+// first step of a tick evaluates, per tile, the box of the cells marked dirty
+// since the last tick (SnowSurface::mark_dirty) and their neighbours; each
+// later step the box of cells whose inputs changed in the step before or that
+// still send snow. Scattered landings therefore cost per landing, and a pile
+// costs by the area it spreads over, whatever the surface's size (issue #8).
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace snow {
@@ -33,33 +32,13 @@ namespace {
 /// four edges then move at most half a cell's difference, so the update is
 /// monotone (no checkerboard oscillation) as well as bounded.
 constexpr std::int64_t edge_divisor = 8;
-/// Tiles are 2^tile_shift cells on a side.
-constexpr std::uint32_t tile_shift = 3;
+/// Tiles are the surface's dirty tiles, 2^tile_shift cells on a side.
+constexpr std::uint32_t tile_shift = dirty_tile_shift;
 constexpr std::uint32_t tile_cells = 1u << tile_shift;
 
 __extension__ using wide = __int128; // q·d products of 50-bit levels
 
-/// Inclusive cell box, in surface coordinates; empty when x0 > x1.
-struct Box {
-    std::uint32_t x0 = 1, z0 = 1, x1 = 0, z1 = 0;
-    [[nodiscard]] bool empty() const { return x0 > x1 || z0 > z1; }
-    void include(std::uint32_t x, std::uint32_t z) {
-        if (empty()) {
-            *this = {x, z, x, z};
-            return;
-        }
-        x0 = std::min(x0, x);
-        x1 = std::max(x1, x);
-        z0 = std::min(z0, z);
-        z1 = std::max(z1, z);
-    }
-    void include(const Box& b) {
-        if (!b.empty()) {
-            include(b.x0, b.z0);
-            include(b.x1, b.z1);
-        }
-    }
-};
+using Box = CellBox;
 
 /// A tile and the cells of it one step evaluates.
 struct TileWork {
@@ -76,7 +55,6 @@ struct RedistributeScratch {
     std::vector<TileWork> active;             ///< this step's work
     std::vector<std::uint32_t> next;          ///< tiles with a non-empty box
     std::vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
-    std::vector<std::uint8_t> row_flags;      ///< scan_rect: cells of one row that may send
 
     void fit(std::size_t cells, std::size_t tiles) {
         if (delta.size() < cells) {
@@ -88,11 +66,6 @@ struct RedistributeScratch {
             active.reserve(tiles);
             next.reserve(tiles);
             touched_tiles.reserve(tiles);
-        }
-    }
-    void fit_row(std::size_t nx) {
-        if (row_flags.size() < nx) {
-            row_flags.resize(nx);
         }
     }
 };
@@ -113,6 +86,26 @@ struct TileGrid {
             r.next.push_back(t);
         }
         r.box[t].include(ix, iz);
+    }
+    /// Every cell of `b` (clipped to the grid) is evaluated next step.
+    void want_box(Box b) {
+        b.x1 = std::min(b.x1, s.nx - 1);
+        b.z1 = std::min(b.z1, s.nz - 1);
+        if (b.empty()) {
+            return;
+        }
+        for (std::uint32_t tz = b.z0 >> tile_shift; tz <= b.z1 >> tile_shift; ++tz) {
+            for (std::uint32_t tx0 = b.x0 >> tile_shift; tx0 <= b.x1 >> tile_shift; ++tx0) {
+                const std::uint32_t t = tz * tx + tx0;
+                if (r.box[t].empty()) {
+                    r.next.push_back(t);
+                }
+                r.box[t].include(std::max(b.x0, tx0 << tile_shift),
+                                 std::max(b.z0, tz << tile_shift));
+                r.box[t].include(std::min(b.x1, ((tx0 + 1) << tile_shift) - 1),
+                                 std::min(b.z1, ((tz + 1) << tile_shift) - 1));
+            }
+        }
     }
     /// Cell (ix, iz) changed: it and its neighbours see new inputs next step.
     void changed(std::uint32_t ix, std::uint32_t iz) {
@@ -259,66 +252,13 @@ void smooth_step(TileGrid& g, SnowSurface& s) {
     apply_touched(g, s);
 }
 
-/// Flags the interior cells x0..x1 of row iz (1 <= x0, x1 + 1 < nx,
-/// 0 < iz < nz - 1) that hold snow and exceed the cap: the only ones
-/// cell_outflow can move. Branch-free over plain arrays, so it vectorises.
-void flag_row(const SnowSurface& s, std::uint32_t iz, std::uint32_t x0, std::uint32_t x1,
-              std::uint8_t* __restrict flags) {
-    const std::size_t row = s.index(0, iz);
-    const std::int64_t* base = s.base_level.data();
-    const std::uint32_t* snow = s.snow.data();
-    const std::size_t nx = s.nx;
-    const std::int64_t limit = s.laplacian_limit_units;
-    for (std::size_t ix = x0; ix <= x1; ++ix) {
-        const std::size_t c = row + ix;
-        const std::int64_t h = base[c] + snow[c];
-        const std::int64_t around = (base[c - 1] + snow[c - 1]) + (base[c + 1] + snow[c + 1]) +
-                                    (base[c - nx] + snow[c - nx]) + (base[c + nx] + snow[c + nx]);
-        flags[ix] = (snow[c] != 0) & (4 * h - around > limit);
-    }
-}
-
-/// The first step of a tick, over the whole marked rectangle `b`: a
-/// vectorised scan finds the interior cells that can send snow, so a large
-/// rectangle with few such cells (scattered landings) costs one pass.
-void scan_step(TileGrid& g, SnowSurface& s, const Box& b) {
-    std::uint8_t* flags = g.r.row_flags.data();
-    for (std::uint32_t iz = b.z0; iz <= b.z1; ++iz) {
-        const bool edge_row = iz == 0 || iz + 1 == s.nz;
-        const std::uint32_t x0 = std::max(b.x0, 1u);
-        const std::uint32_t x1 = std::min(b.x1, s.nx - 2);
-        if (edge_row || s.nx < 3 || x0 > x1) {
-            for (std::uint32_t ix = b.x0; ix <= b.x1; ++ix) {
-                visit(g, ix, iz);
-            }
-            continue;
-        }
-        if (b.x0 < x0) {
-            visit(g, b.x0, iz); // column 0
-        }
-        flag_row(s, iz, x0, x1, flags);
-        // Eight flags per word: a row with nothing to move costs a few tests.
-        for (std::uint32_t j = x0; j <= x1; j += 8) {
-            std::uint64_t word = 0;
-            std::memcpy(&word, flags + j, std::min<std::uint32_t>(8, x1 + 1 - j));
-            for (; word != 0; word &= word - 1) {
-                visit(g, j + static_cast<std::uint32_t>(std::countr_zero(word)) / 8, iz);
-            }
-        }
-        if (b.x1 > x1) {
-            visit(g, b.x1, iz); // column nx - 1
-        }
-    }
-    apply_touched(g, s);
-}
-
 } // namespace
 
 void redistribute_system(World& w) {
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& counters = w.resource<SimCounters>();
     // Sub-iterations per surface per tick; a pile still moving after that
-    // keeps its dirty rectangle and continues next tick.
+    // keeps its cells marked and continues next tick.
     const std::uint32_t max_iterations = w.resource<SimConfig>().smoothing_iterations;
     auto* scratch = w.try_resource<RedistributeScratch>();
     if (scratch == nullptr) {
@@ -332,31 +272,26 @@ void redistribute_system(World& w) {
         const std::uint32_t tz = (s.nz + tile_cells - 1) >> tile_shift;
         // once per larger surface
         scratch->fit(s.cell_count(), static_cast<std::size_t>(tx) * tz);
-        scratch->fit_row(s.nx);
         TileGrid g{s, *scratch, tx};
         // Cells whose cap may now fail: the marked ones and their neighbours.
-        const std::uint32_t x1 = std::min(s.dirty_x1, s.nx - 1);
-        const std::uint32_t z1 = std::min(s.dirty_z1, s.nz - 1);
-        ++counters.smoothing_iterations;
-        scan_step(g, s,
-                  {s.dirty_x0 > 0 ? s.dirty_x0 - 1 : 0, s.dirty_z0 > 0 ? s.dirty_z0 - 1 : 0,
-                   std::min(x1 + 1, s.nx - 1), std::min(z1 + 1, s.nz - 1)});
-        for (std::uint32_t it = 1; it < max_iterations && !scratch->next.empty(); ++it) {
+        for (const std::uint32_t t : s.dirty_tiles) {
+            const Box& m = s.tile_dirty[t];
+            g.want_box({m.x0 > 0 ? m.x0 - 1 : 0, m.z0 > 0 ? m.z0 - 1 : 0, m.x1 + 1, m.z1 + 1});
+        }
+        s.clear_dirty();
+        for (std::uint32_t it = 0; it < max_iterations && !scratch->next.empty(); ++it) {
             ++counters.smoothing_iterations;
             smooth_step(g, s);
         }
-        // Still moving after the cap: the wanted cells carry over as the dirty
-        // rectangle. Flows never raise the highest level, so level_bound stays valid.
-        Box left;
+        // Still moving after the cap: the wanted cells carry over as dirty
+        // cells. Flows never raise the highest level, so level_bound stays valid.
         for (const std::uint32_t t : scratch->next) {
-            left.include(scratch->box[t]);
+            const Box b = scratch->box[t]; // within tile t: its two corners mark it all
+            s.mark_dirty(b.x0, b.z0);
+            s.mark_dirty(b.x1, b.z1);
             scratch->box[t] = Box{};
         }
         scratch->next.clear();
-        s.dirty_x0 = left.x0;
-        s.dirty_z0 = left.z0;
-        s.dirty_x1 = left.x1;
-        s.dirty_z1 = left.z1;
     }
 }
 

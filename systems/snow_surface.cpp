@@ -85,6 +85,9 @@ SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
         }
     }
     s.level_bound = *std::max_element(s.base_level.begin(), s.base_level.end());
+    // Every tile is listed at most once: no tick allocates for marking.
+    s.tile_dirty.assign(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), CellBox{});
+    s.dirty_tiles.reserve(s.tile_dirty.size());
     // A limit beyond what a cell can hold never triggers: clamp instead of overflowing.
     const double edge = std::round(def.edge_limit / unit_height);
     s.edge_limit_units = static_cast<std::uint32_t>(
@@ -117,7 +120,27 @@ void SnowSurface::mark_dirty(std::uint32_t ix, std::uint32_t iz) {
         dirty_z0 = std::min(dirty_z0, iz);
         dirty_z1 = std::max(dirty_z1, iz);
     }
+    const std::size_t tiles = static_cast<std::size_t>(tiles_x()) * tiles_z();
+    if (tile_dirty.size() != tiles) { // a surface not made by make_surface
+        tile_dirty.assign(tiles, CellBox{});
+        dirty_tiles.clear();
+        dirty_tiles.reserve(tiles);
+    }
+    const std::uint32_t t = (iz >> dirty_tile_shift) * tiles_x() + (ix >> dirty_tile_shift);
+    if (tile_dirty[t].empty()) {
+        dirty_tiles.push_back(t);
+    }
+    tile_dirty[t].include(ix, iz);
     level_bound = std::max(level_bound, level(index(ix, iz)));
+}
+
+void SnowSurface::clear_dirty() {
+    for (const std::uint32_t t : dirty_tiles) {
+        tile_dirty[t] = CellBox{};
+    }
+    dirty_tiles.clear();
+    dirty_x0 = dirty_z0 = 1;
+    dirty_x1 = dirty_z1 = 0;
 }
 
 std::uint64_t SnowSurface::settled_units() const {

@@ -28,6 +28,32 @@ struct SurfaceDef {
 /// Largest grid a surface may have (cells per side); larger is an input error.
 inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
 
+/// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
+/// so redistribution works where snow changed, whatever the surface's size.
+inline constexpr std::uint32_t dirty_tile_shift = 3;
+
+/// Inclusive cell box, in surface coordinates; empty when x0 > x1.
+struct CellBox {
+    std::uint32_t x0 = 1, z0 = 1, x1 = 0, z1 = 0;
+    [[nodiscard]] bool empty() const { return x0 > x1 || z0 > z1; }
+    void include(std::uint32_t x, std::uint32_t z) {
+        if (empty()) {
+            *this = {x, z, x, z};
+            return;
+        }
+        x0 = x < x0 ? x : x0;
+        x1 = x > x1 ? x : x1;
+        z0 = z < z0 ? z : z0;
+        z1 = z > z1 ? z : z1;
+    }
+    void include(const CellBox& b) {
+        if (!b.empty()) {
+            include(b.x0, b.z0);
+            include(b.x1, b.z1);
+        }
+    }
+};
+
 /// Component. Heights are compared as integer "levels" in units of
 /// `unit_height`, so rolling and smoothing are exact and order-free.
 struct SnowSurface {
@@ -39,8 +65,14 @@ struct SnowSurface {
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
     bool spills = true;
-    // Dirty rectangle (inclusive cell bounds) for redistribution; empty when lo > hi.
+    // Dirty rectangle (inclusive cell bounds): the bounding box of every cell
+    // waiting for redistribution; empty when lo > hi.
     std::uint32_t dirty_x0 = 1, dirty_z0 = 1, dirty_x1 = 0, dirty_z1 = 0;
+    /// Per tile (row-major, tiles_x() per row): the cells of it waiting for
+    /// redistribution. Sized by make_surface (or the first mark_dirty).
+    std::vector<CellBox> tile_dirty;
+    /// The tiles whose tile_dirty box is not empty, in the order first marked.
+    std::vector<std::uint32_t> dirty_tiles;
     /// Upper bound of every cell's level, raised by mark_dirty(); lets deposit
     /// skip flakes far above the surface. Whoever changes `snow` calls mark_dirty.
     std::int64_t level_bound = 0;
@@ -56,8 +88,17 @@ struct SnowSurface {
     }
     /// Cell under world (x, z); false when outside the grid.
     [[nodiscard]] bool cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const;
-    /// Records that cell (ix, iz) changed: grows the dirty rectangle and level_bound.
+    /// Records that cell (ix, iz) changed: grows its tile's dirty box, the
+    /// dirty rectangle and level_bound.
     void mark_dirty(std::uint32_t ix, std::uint32_t iz);
+    /// Forgets every dirty cell (redistribution took them over).
+    void clear_dirty();
+    [[nodiscard]] std::uint32_t tiles_x() const {
+        return (nx + (1u << dirty_tile_shift) - 1) >> dirty_tile_shift;
+    }
+    [[nodiscard]] std::uint32_t tiles_z() const {
+        return (nz + (1u << dirty_tile_shift) - 1) >> dirty_tile_shift;
+    }
     /// True when no cell waits for redistribution.
     [[nodiscard]] bool dirty_empty() const { return dirty_x0 > dirty_x1 || dirty_z0 > dirty_z1; }
     /// Indices of the existing 4-neighbours of (ix, iz), in the order -x, +x, -z, +z
