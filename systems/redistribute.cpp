@@ -21,7 +21,9 @@
 #include "systems/systems.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace snow {
@@ -55,6 +57,7 @@ struct RedistributeScratch {
     std::vector<TileWork> active;             ///< this step's work
     std::vector<std::uint32_t> next;          ///< tiles with a non-empty box
     std::vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
+    std::vector<std::uint8_t> row_flags;      ///< scan_step: cells of one row that may send
 
     void fit(std::size_t cells, std::size_t tiles) {
         if (delta.size() < cells) {
@@ -66,6 +69,11 @@ struct RedistributeScratch {
             active.reserve(tiles);
             next.reserve(tiles);
             touched_tiles.reserve(tiles);
+        }
+    }
+    void fit_row(std::size_t nx) {
+        if (row_flags.size() < nx) {
+            row_flags.resize(nx);
         }
     }
 };
@@ -252,6 +260,59 @@ void smooth_step(TileGrid& g, SnowSurface& s) {
     apply_touched(g, s);
 }
 
+/// Flags the interior cells x0..x1 of row iz (1 <= x0, x1 + 1 < nx,
+/// 0 < iz < nz - 1) that hold snow and exceed the cap: the only ones
+/// cell_outflow can move. Branch-free over plain arrays, so it vectorises.
+void flag_row(const SnowSurface& s, std::uint32_t iz, std::uint32_t x0, std::uint32_t x1,
+              std::uint8_t* __restrict flags) {
+    const std::size_t row = s.index(0, iz);
+    const std::int64_t* base = s.base_level.data();
+    const std::uint32_t* snow = s.snow.data();
+    const std::size_t nx = s.nx;
+    const std::int64_t limit = s.laplacian_limit_units;
+    for (std::size_t ix = x0; ix <= x1; ++ix) {
+        const std::size_t c = row + ix;
+        const std::int64_t h = base[c] + snow[c];
+        const std::int64_t around = (base[c - 1] + snow[c - 1]) + (base[c + 1] + snow[c + 1]) +
+                                    (base[c - nx] + snow[c - nx]) + (base[c + nx] + snow[c + nx]);
+        flags[ix] = (snow[c] != 0) & (4 * h - around > limit);
+    }
+}
+
+/// The first step of a tick when most tiles are marked: one vectorised scan
+/// of the marked rectangle `b` finds the interior cells that can send snow,
+/// cheaper than visiting the tiles' boxes one cell at a time.
+void scan_step(TileGrid& g, SnowSurface& s, const Box& b) {
+    std::uint8_t* flags = g.r.row_flags.data();
+    for (std::uint32_t iz = b.z0; iz <= b.z1; ++iz) {
+        const bool edge_row = iz == 0 || iz + 1 == s.nz;
+        const std::uint32_t x0 = std::max(b.x0, 1u);
+        const std::uint32_t x1 = std::min(b.x1, s.nx - 2);
+        if (edge_row || s.nx < 3 || x0 > x1) {
+            for (std::uint32_t ix = b.x0; ix <= b.x1; ++ix) {
+                visit(g, ix, iz);
+            }
+            continue;
+        }
+        if (b.x0 < x0) {
+            visit(g, b.x0, iz); // column 0
+        }
+        flag_row(s, iz, x0, x1, flags);
+        // Eight flags per word: a row with nothing to move costs a few tests.
+        for (std::uint32_t j = x0; j <= x1; j += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, flags + j, std::min<std::uint32_t>(8, x1 + 1 - j));
+            for (; word != 0; word &= word - 1) {
+                visit(g, j + static_cast<std::uint32_t>(std::countr_zero(word)) / 8, iz);
+            }
+        }
+        if (b.x1 > x1) {
+            visit(g, b.x1, iz); // column nx - 1
+        }
+    }
+    apply_touched(g, s);
+}
+
 } // namespace
 
 void redistribute_system(World& w) {
@@ -272,14 +333,25 @@ void redistribute_system(World& w) {
         const std::uint32_t tz = (s.nz + tile_cells - 1) >> tile_shift;
         // once per larger surface
         scratch->fit(s.cell_count(), static_cast<std::size_t>(tx) * tz);
+        scratch->fit_row(s.nx);
         TileGrid g{s, *scratch, tx};
-        // Cells whose cap may now fail: the marked ones and their neighbours.
-        for (const std::uint32_t t : s.dirty_tiles) {
-            const Box& m = s.tile_dirty[t];
-            g.want_box({m.x0 > 0 ? m.x0 - 1 : 0, m.z0 > 0 ? m.z0 - 1 : 0, m.x1 + 1, m.z1 + 1});
+        // First step: the cells whose cap may now fail, the marked ones and
+        // their neighbours; per tile, or in one scan when most tiles are marked.
+        ++counters.smoothing_iterations;
+        if (4 * s.dirty_tiles.size() >= static_cast<std::size_t>(tx) * tz) {
+            const Box r{s.dirty_x0 > 0 ? s.dirty_x0 - 1 : 0, s.dirty_z0 > 0 ? s.dirty_z0 - 1 : 0,
+                        std::min(s.dirty_x1 + 1, s.nx - 1), std::min(s.dirty_z1 + 1, s.nz - 1)};
+            s.clear_dirty();
+            scan_step(g, s, r);
+        } else {
+            for (const std::uint32_t t : s.dirty_tiles) {
+                const Box& m = s.tile_dirty[t];
+                g.want_box({m.x0 > 0 ? m.x0 - 1 : 0, m.z0 > 0 ? m.z0 - 1 : 0, m.x1 + 1, m.z1 + 1});
+            }
+            s.clear_dirty();
+            smooth_step(g, s);
         }
-        s.clear_dirty();
-        for (std::uint32_t it = 0; it < max_iterations && !scratch->next.empty(); ++it) {
+        for (std::uint32_t it = 1; it < max_iterations && !scratch->next.empty(); ++it) {
             ++counters.smoothing_iterations;
             smooth_step(g, s);
         }
