@@ -123,7 +123,7 @@ EOF
 gnuplot <<EOF
 set terminal pngcairo size 800,520 font ",11"
 set output "docs/img/perf_scaling.png"
-set title "snow: full simulation tick (BM\\_SimTick, snowfall yard, 512² ground)"
+set title "snow: full simulation tick (BM_SimTick, snowfall yard, 512² ground)" noenhanced
 set xlabel "flakes alive"
 set ylabel "ms per tick (median of ${REPS})"
 set logscale xy
