@@ -24,7 +24,7 @@ struct QualityPreset {
     FlakeLod lod;
 };
 
-// From docs/accuracy.md (scripts/accuracy.sh, run of 2026-11-25 05:13 UTC):
+// From docs/accuracy.md (scripts/accuracy.sh, run of 2026-12-01 16:23 UTC):
 // low, medium and high are the cheapest studied settings within 2, 1.5 and
 // 1.2 times the depth field's sampling noise (low ticking at >= 30 Hz, the
 // others at >= 60 Hz; low and medium with the scene's cells or coarser), each

@@ -1,5 +1,6 @@
 #include "render/fog_puff_pass.hpp"
 
+#include "render/fullscreen.hpp"
 #include "render/render_error.hpp"
 
 #include <algorithm>
@@ -62,16 +63,9 @@ void FogPuffPass::run(const World& world, FrameContext& frame) {
     program.use();
     glUniform1i(program.uniform("scene_depth"), scene_depth_unit);
     set_puff_uniforms(program, fog.puffs);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
     // src alpha = 1 − 0.5^depth: colour = mix(fog colour, colour, 0.5^depth) (seed 001).
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    draw_fullscreen_blended(vao_);
     glEnable(GL_DEPTH_TEST);
 }
 

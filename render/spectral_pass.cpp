@@ -1,5 +1,6 @@
 #include "render/spectral_pass.hpp"
 
+#include "render/fullscreen.hpp"
 #include "render/spectral_volume.hpp"
 #include "systems/emitter.hpp"
 #include "systems/sim_config.hpp"
@@ -145,14 +146,7 @@ void SpectralPass::run(const World& world, FrameContext& frame) {
                 static_cast<float>(map.tiles_around / (2.0 * std::numbers::pi)),
                 wind_shear(world, frame.camera, fall), static_cast<float>(phase), s.opacity);
     glUniform2f(program.uniform("spectral_fade"), start, full);
-    glDepthMask(GL_FALSE); // depth test on (GL_LESS): nearer surfaces hide the layer
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
+    draw_fullscreen_blended(vao_); // depth test on (GL_LESS): nearer surfaces hide the layer
 }
 
 } // namespace snow
