@@ -17,5 +17,5 @@ if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
     exec "$BUILD_DIR/game/snow_game" "$@"
 fi
 OUT_DIR=${OUT_DIR:-out/frames}
-echo "[play] no display: rendering 120 frames headless into ${OUT_DIR}"
+echo "[play] no display: rendering headless into ${OUT_DIR} (120 frames unless --frames N is given)"
 exec "$BUILD_DIR/game/snow_game" --headless --frames 120 --out "$OUT_DIR" "$@"
