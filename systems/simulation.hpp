@@ -82,7 +82,8 @@ class Simulation {
     /// NaN/inf values in flake and wind state (0 for a healthy run).
     [[nodiscard]] std::uint64_t nonfinite_count() const;
 
-    /// Sets the integrator (the rest of the config is fixed at creation).
+    /// Sets the integrator (the rest of the config is fixed at creation);
+    /// throws SnowError for a value outside Integrator.
     void set_integrator(Integrator i);
 
     [[nodiscard]] std::unique_ptr<Snapshot> save() const;
