@@ -12,7 +12,7 @@ namespace {
 
 /// Height (m) of a cell's bare top.
 float base_y(const SnowSurface& s, std::size_t i) {
-    return static_cast<float>(static_cast<double>(s.base_level[i]) * s.unit_height);
+    return s.height(s.base_level[i]);
 }
 
 /// Corner (ix, iz), 0..nx × 0..nz: averages of the up to four cells around it.

@@ -492,7 +492,8 @@ void collide_system(World& w) {
 
     // Sequential, in slot order: the ledger and the free stack see one order.
     auto& ledger = w.resource<MassLedger>();
-    for (std::size_t chunk = 0; chunk < JobPool::chunk_count(n, flake_grain); ++chunk) {
+    const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
         const std::size_t base = chunk * flake_grain;
         for (std::uint32_t k = 0; k < scratch.counts[chunk]; ++k) {
             const std::uint32_t slot = scratch.slots[base + k];

@@ -104,11 +104,6 @@ float far_edge(float x0, float cell, std::uint32_t n) {
                               1.0e-6);
 }
 
-/// Height (m) of `level` on surface s, rounded as find_landing rounds it.
-float level_y(const SnowSurface& s, std::int64_t level) {
-    return static_cast<float>(static_cast<double>(level) * s.unit_height);
-}
-
 void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     float ux0 = std::numeric_limits<float>::max(), uz0 = ux0;
     float ux1 = std::numeric_limits<float>::lowest(), uz1 = ux1;
@@ -159,7 +154,7 @@ void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     for (const SnowSurface& s : surfaces) {
         const std::int64_t lowest =
             s.base_level.empty() ? 0 : *std::min_element(s.base_level.begin(), s.base_level.end());
-        d.min_bare.push_back(level_y(s, lowest));
+        d.min_bare.push_back(s.height(lowest));
     }
 }
 
@@ -182,14 +177,14 @@ void refresh_tops(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
         std::uint32_t lowest = d.bin_start[b]; // the item with the lowest bare top (first on ties)
         for (std::uint32_t k = d.bin_start[b]; k < d.bin_start[b + 1]; ++k) {
             const SnowSurface& s = surfaces[d.bin_items[k]];
-            top = std::max(top, level_y(s, s.level_bound) + 2.0f * landing_tolerance);
+            top = std::max(top, s.height(s.level_bound) + 2.0f * landing_tolerance);
             lowest = d.min_bare[d.bin_items[k]] < d.min_bare[d.bin_items[lowest]] ? k : lowest;
         }
         d.bin_top[b] = top;
         for (std::uint32_t k = d.bin_start[b]; k < d.bin_start[b + 1]; ++k) {
             const std::uint32_t i = d.bin_items[k];
             if (k == lowest) {
-                d.floor_top = std::max(d.floor_top, level_y(surfaces[i], surfaces[i].level_bound) +
+                d.floor_top = std::max(d.floor_top, surfaces[i].height(surfaces[i].level_bound) +
                                                         2.0f * landing_tolerance);
             } else {
                 d.upper_bare = std::min(d.upper_bare, d.min_bare[i] - 2.0f * landing_tolerance);
@@ -265,7 +260,7 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, fl
         }
         const std::size_t c = s.index(ix, iz);
         const float top = s.top_y(c);
-        const auto bare = static_cast<float>(static_cast<double>(s.base_level[c]) * s.unit_height);
+        const float bare = s.height(s.base_level[c]);
         const bool on_top = std::abs(y - top) <= landing_tolerance;
         // Reached the top this tick, or started it inside the snow layer (the
         // snow may have grown over a hovering flake): either way it lands.

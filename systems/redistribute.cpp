@@ -84,24 +84,16 @@ struct TileGrid {
     RedistributeScratch& r;
     std::uint32_t tx; ///< tiles per row
 
-    [[nodiscard]] std::uint32_t tile_of(std::uint32_t ix, std::uint32_t iz) const {
-        return (iz >> tile_shift) * tx + (ix >> tile_shift);
-    }
     /// Cell (ix, iz) is evaluated next step.
     void want(std::uint32_t ix, std::uint32_t iz) {
-        const std::uint32_t t = tile_of(ix, iz);
+        const std::uint32_t t = s.tile_of(ix, iz);
         if (r.box[t].empty()) {
             r.next.push_back(t);
         }
         r.box[t].include(ix, iz);
     }
-    /// Every cell of `b` (clipped to the grid) is evaluated next step.
-    void want_box(Box b) {
-        b.x1 = std::min(b.x1, s.nx - 1);
-        b.z1 = std::min(b.z1, s.nz - 1);
-        if (b.empty()) {
-            return;
-        }
+    /// Every cell of `b` (inside the grid) is evaluated next step.
+    void want_box(const Box& b) {
         for (std::uint32_t tz = b.z0 >> tile_shift; tz <= b.z1 >> tile_shift; ++tz) {
             for (std::uint32_t tx0 = b.x0 >> tile_shift; tx0 <= b.x1 >> tile_shift; ++tx0) {
                 const std::uint32_t t = tz * tx + tx0;
@@ -132,8 +124,8 @@ struct TileGrid {
         }
     }
     void touch(std::size_t cell) {
-        const std::uint32_t t = tile_of(static_cast<std::uint32_t>(cell % s.nx),
-                                        static_cast<std::uint32_t>(cell / s.nx));
+        const std::uint32_t t = s.tile_of(static_cast<std::uint32_t>(cell % s.nx),
+                                          static_cast<std::uint32_t>(cell / s.nx));
         if (r.touched[t] == 0) {
             r.touched[t] = 1;
             r.touched_tiles.push_back(t);
@@ -329,24 +321,21 @@ void redistribute_system(World& w) {
         if (s.dirty_empty() || s.nx == 0 || s.nz == 0) {
             continue;
         }
-        const std::uint32_t tx = (s.nx + tile_cells - 1) >> tile_shift;
-        const std::uint32_t tz = (s.nz + tile_cells - 1) >> tile_shift;
+        const std::size_t tiles = static_cast<std::size_t>(s.tiles_x()) * s.tiles_z();
         // once per larger surface
-        scratch->fit(s.cell_count(), static_cast<std::size_t>(tx) * tz);
+        scratch->fit(s.cell_count(), tiles);
         scratch->fit_row(s.nx);
-        TileGrid g{s, *scratch, tx};
+        TileGrid g{s, *scratch, s.tiles_x()};
         // First step: the cells whose cap may now fail, the marked ones and
         // their neighbours; per tile, or in one scan when most tiles are marked.
         ++counters.smoothing_iterations;
-        if (4 * s.dirty_tiles.size() >= static_cast<std::size_t>(tx) * tz) {
-            const Box r{s.dirty_x0 > 0 ? s.dirty_x0 - 1 : 0, s.dirty_z0 > 0 ? s.dirty_z0 - 1 : 0,
-                        std::min(s.dirty_x1 + 1, s.nx - 1), std::min(s.dirty_z1 + 1, s.nz - 1)};
+        if (4 * s.dirty_tiles.size() >= tiles) {
+            const Box r = Box{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}.grown(s.nx, s.nz);
             s.clear_dirty();
             scan_step(g, s, r);
         } else {
             for (const std::uint32_t t : s.dirty_tiles) {
-                const Box& m = s.tile_dirty[t];
-                g.want_box({m.x0 > 0 ? m.x0 - 1 : 0, m.z0 > 0 ? m.z0 - 1 : 0, m.x1 + 1, m.z1 + 1});
+                g.want_box(s.tile_dirty[t].grown(s.nx, s.nz));
             }
             s.clear_dirty();
             smooth_step(g, s);

@@ -126,7 +126,7 @@ void SnowSurface::mark_dirty(std::uint32_t ix, std::uint32_t iz) {
         dirty_tiles.clear();
         dirty_tiles.reserve(tiles);
     }
-    const std::uint32_t t = (iz >> dirty_tile_shift) * tiles_x() + (ix >> dirty_tile_shift);
+    const std::uint32_t t = tile_of(ix, iz);
     if (tile_dirty[t].empty()) {
         dirty_tiles.push_back(t);
     }

@@ -52,6 +52,11 @@ struct CellBox {
             include(b.x1, b.z1);
         }
     }
+    /// This box grown by one cell on every side, clipped to an nx × nz grid.
+    [[nodiscard]] CellBox grown(std::uint32_t nx, std::uint32_t nz) const {
+        return {x0 > 0 ? x0 - 1 : 0, z0 > 0 ? z0 - 1 : 0, x1 + 1 < nx ? x1 + 1 : nx - 1,
+                z1 + 1 < nz ? z1 + 1 : nz - 1};
+    }
 };
 
 /// Component. Heights are compared as integer "levels" in units of
@@ -82,10 +87,13 @@ struct SnowSurface {
         return static_cast<std::size_t>(iz) * nx + ix;
     }
     [[nodiscard]] std::int64_t level(std::size_t i) const { return base_level[i] + snow[i]; }
-    /// World height (m) of the snow top of cell i.
-    [[nodiscard]] float top_y(std::size_t i) const {
-        return static_cast<float>(static_cast<double>(level(i)) * unit_height);
+    /// World height (m) of a level, rounded once from double (as every user of
+    /// heights compares them).
+    [[nodiscard]] float height(std::int64_t lvl) const {
+        return static_cast<float>(static_cast<double>(lvl) * unit_height);
     }
+    /// World height (m) of the snow top of cell i.
+    [[nodiscard]] float top_y(std::size_t i) const { return height(level(i)); }
     /// Cell under world (x, z); false when outside the grid.
     [[nodiscard]] bool cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const;
     /// Records that cell (ix, iz) changed: grows its tile's dirty box, the
@@ -98,6 +106,10 @@ struct SnowSurface {
     }
     [[nodiscard]] std::uint32_t tiles_z() const {
         return (nz + (1u << dirty_tile_shift) - 1) >> dirty_tile_shift;
+    }
+    /// The dirty tile holding cell (ix, iz).
+    [[nodiscard]] std::uint32_t tile_of(std::uint32_t ix, std::uint32_t iz) const {
+        return (iz >> dirty_tile_shift) * tiles_x() + (ix >> dirty_tile_shift);
     }
     /// True when no cell waits for redistribution.
     [[nodiscard]] bool dirty_empty() const { return dirty_x0 > dirty_x1 || dirty_z0 > dirty_z1; }

@@ -51,8 +51,7 @@ Aabb spawn_region(const World& w, const Aabb& bounds) {
              {s.index(0, 0), s.index(static_cast<std::uint32_t>(last_x), 0),
               s.index(0, static_cast<std::uint32_t>(last_z)),
               s.index(static_cast<std::uint32_t>(last_x), static_cast<std::uint32_t>(last_z))}) {
-            ground = std::min(
-                ground, static_cast<float>(static_cast<double>(s.base_level[i]) * s.unit_height));
+            ground = std::min(ground, s.height(s.base_level[i]));
             any = true;
         }
     });
