@@ -74,8 +74,8 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
         const std::string_view name = args.value();
         const auto i = parse_integrator(name);
         if (!i) {
-            throw UsageError{"--integrator: unknown '" + std::string(name) +
-                             "' (euler, semi_implicit, exponential, rk4, auto)"};
+            throw UsageError{"--integrator: unknown '" + std::string(name) + "' (" +
+                             integrator_choices() + ")"};
         }
         o.integrator = *i;
     } else {

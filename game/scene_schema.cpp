@@ -56,8 +56,7 @@ void read_simulation(JsonReader r, SceneSnow& s) {
         const auto i = parse_integrator(integrator);
         if (!i) {
             scene_fail(r.field("integrator"),
-                       "must be one of euler, semi_implicit, exponential, rk4, auto (got \"" +
-                           integrator + "\")");
+                       "must be one of " + integrator_choices() + " (got \"" + integrator + "\")");
         }
         c.integrator = *i;
     }

@@ -1,6 +1,7 @@
 #include "systems/sim_config.hpp"
 
 #include <array>
+#include <string>
 #include <utility>
 
 namespace snow {
@@ -22,6 +23,14 @@ std::string_view integrator_name(Integrator i) {
         }
     }
     return "unknown";
+}
+
+std::string integrator_choices() {
+    std::string s;
+    for (const auto& [value, name] : integrator_names) {
+        s += (s.empty() ? "" : ", ") + std::string(name);
+    }
+    return s;
 }
 
 std::optional<Integrator> parse_integrator(std::string_view name) {

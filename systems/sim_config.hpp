@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace snow {
@@ -20,6 +21,8 @@ enum class Integrator : std::uint8_t {
 
 [[nodiscard]] std::string_view integrator_name(Integrator i);
 [[nodiscard]] std::optional<Integrator> parse_integrator(std::string_view name);
+/// Every integrator name, comma-separated, for error messages.
+[[nodiscard]] std::string integrator_choices();
 
 struct SimConfig {
     std::uint64_t seed = 1;

@@ -43,8 +43,7 @@ std::string validate(const SimConfig& c) {
     }
     check::at_most(e, "simulation.smoothing_iterations", c.smoothing_iterations, 4096);
     if (integrator_name(c.integrator) == "unknown") {
-        check::fail(e, "simulation.integrator",
-                    "one of euler, semi_implicit, exponential, rk4, auto",
+        check::fail(e, "simulation.integrator", "one of " + integrator_choices(),
                     static_cast<double>(c.integrator));
     }
     return e;
