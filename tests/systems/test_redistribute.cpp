@@ -2,6 +2,7 @@
 // negative cell, exact mass, no new maximum (RELIABILITY.md: a mass check
 // alone misses a blow-up) and no sweep-direction bias.
 #include "systems/simulation.hpp"
+#include "tests/support/settle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,15 +22,7 @@ struct Field {
         s().snow[s().index(ix, iz)] += units;
         s().mark_dirty(ix, iz);
     }
-    /// Runs the system until the surface is clean; returns the calls it took.
-    int settle(int max_calls) {
-        int calls = 0;
-        while (!s().dirty_empty() && calls < max_calls) {
-            redistribute_system(sim.world());
-            ++calls;
-        }
-        return calls;
-    }
+    int settle(int max_calls) { return test::settle_surface(sim, e, max_calls); }
     [[nodiscard]] std::uint32_t peak() {
         return *std::max_element(s().snow.begin(), s().snow.end());
     }

@@ -3,6 +3,7 @@
 // still moving at the cap goes on next tick: the cap changes when snow
 // settles, never where it ends up or how much there is.
 #include "systems/simulation.hpp"
+#include "tests/support/settle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,15 +34,7 @@ struct Pile {
         return d;
     }
     SnowSurface& surface() { return sim.world().get<SnowSurface>(e); }
-    /// Calls the system until the surface is clean; returns the calls it took.
-    int settle(int max_calls) {
-        int calls = 0;
-        while (!surface().dirty_empty() && calls < max_calls) {
-            redistribute_system(sim.world());
-            ++calls;
-        }
-        return calls;
-    }
+    int settle(int max_calls) { return test::settle_surface(sim, e, max_calls); }
 };
 
 TEST(SmoothingCap, OneCallRunsAtMostTheCap) {
