@@ -3,7 +3,7 @@
 // truncations, swapped values, deleted characters) must each give either a
 // working simulation or one clean error, never a crash. CI runs this under
 // ASan + UBSan (SNOW_SANITIZE), which turns any out-of-range read into a failure.
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Scene loading: the project's scenes load with the declared roles, and every
 // kind of bad input gives one error naming the file and the field, no Simulation.
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The default scene end to end (issue #4's "done when"): every system runs,
 // snow settles on roofs and ground, roofs spill onto the porch and ground,
 // the mass books balance exactly and nothing turns non-finite.
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 /// (internal to snow::scene).
 #pragma once
 
-#include "game/scene_json.hpp"
+#include "game/scene/scene_json.hpp"
 
 #include <tiny_gltf.h>
 

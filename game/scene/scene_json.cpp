@@ -1,7 +1,7 @@
 // Strict typed reads from nlohmann::json for the scene schema. The JSON is
 // parsed by the loader itself (not via tinygltf::Value, which truncates
 // integers to int and drops nulls), so types and values are exactly the file's.
-#include "game/scene_json.hpp"
+#include "game/scene/scene_json.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // OcclusionCamera, SpectralSnow, camera and lights. Types are checked here;
 // value ranges by the simulation's own validate() functions (one place, shared
 // with the facade), whose messages are prefixed with the JSON path.
-#include "game/scene_schema.hpp"
+#include "game/scene/scene_schema.hpp"
 
 #include "systems/validation.hpp"
 

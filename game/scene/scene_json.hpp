@@ -3,7 +3,7 @@
 /// (internal to snow::scene). Every error names the full path of the field.
 #pragma once
 
-#include "game/scene_error.hpp"
+#include "game/scene/scene_error.hpp"
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>

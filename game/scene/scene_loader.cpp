@@ -2,10 +2,10 @@
 // buffers, unpack every accessor with checked ranges, and only then create
 // the simulation. Any failure is one message "<file>: <field> <problem>" and
 // no Simulation (never a partly built one).
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
-#include "game/scene_build.hpp"
-#include "game/scene_gltf.hpp"
+#include "game/scene/scene_build.hpp"
+#include "game/scene/scene_gltf.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -3,7 +3,7 @@
 /// own def structs (internal to snow::scene). Geometry comes from scene_gltf.
 #pragma once
 
-#include "game/scene_json.hpp"
+#include "game/scene/scene_json.hpp"
 #include "systems/simulation.hpp"
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Accessor reads with every byte range checked before any byte is touched.
 // tinygltf fills the structs but does not bound-check accessor ranges.
-#include "game/scene_accessor.hpp"
+#include "game/scene/scene_accessor.hpp"
 
 #include <bit>
 #include <cmath>

@@ -3,9 +3,9 @@
 // .glb heap overflows (#372, #363). So: ASCII only, our own fs callbacks that
 // resolve every path and refuse anything outside the scene's folder, and a
 // no-op image loader (the simulation needs no textures; stb_image never runs).
-#include "game/scene_gltf.hpp"
+#include "game/scene/scene_gltf.hpp"
 
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <filesystem>
 #include <fstream>

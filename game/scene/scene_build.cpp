@@ -1,7 +1,7 @@
 // Scene creation. All simulation state goes through the Simulation facade
 // (which validates again and throws SnowError naming the field); the loader
 // adds only what the renderer reads: meshes, lights, camera, environment.
-#include "game/scene_build.hpp"
+#include "game/scene/scene_build.hpp"
 
 #include <glm/common.hpp>
 

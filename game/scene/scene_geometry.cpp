@@ -1,9 +1,9 @@
 // Scene instancing: node graph → world-space meshes. The graph is walked with
 // an explicit stack (no recursion for hostile depths) and a seen-mask, so a
 // cycle or a node with two parents is an error rather than a hang.
-#include "game/scene_geometry.hpp"
+#include "game/scene/scene_geometry.hpp"
 
-#include "game/scene_accessor.hpp"
+#include "game/scene/scene_accessor.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
