@@ -149,7 +149,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         const NodeSnow& role = d.roles[i];
         const std::string path = "nodes[" + std::to_string(node.index) + "].extras.snow";
         if ((role.surface || role.collider) && node.primitives.empty()) {
-            scene_fail(path, "declares a surface or collider, but the node has no mesh");
+            scene_fail(path, "declares a surface or collider, but the node has no triangle mesh");
         }
         if (role.surface) {
             surfaces[i] = surface_over(*role.surface, node.bounds);

@@ -1,13 +1,18 @@
-// Scene loading, OSS-Fuzz cgltf style: cap the input, parse, validate, load
-// buffers, unpack every accessor with checked ranges, and only then create
-// the simulation. Any failure is one message "<file>: <field> <problem>" and
-// no Simulation (never a partly built one).
+// Scene loading as one straight pipeline, OSS-Fuzz cgltf style:
+//   read bytes → split the container (.gltf text or .glb chunks) → parse the
+//   JSON once → read glTF's objects and the snow schema from that one parse →
+//   load buffer bytes → instance the geometry (every accessor range checked)
+//   → create the simulation.
+// Any failure is one message "<file>: <field> <problem>" and no Simulation
+// (never a partly built one).
 #include "game/scene/scene_loader.hpp"
 
+#include "game/scene/scene_buffers.hpp"
 #include "game/scene/scene_build.hpp"
-#include "game/scene/scene_gltf.hpp"
+#include "game/scene/scene_container.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <new>
@@ -18,8 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Deepest array/object nesting accepted. Scenes need under 10; tinygltf
-/// converts extras recursively, so hostile depth could exhaust the stack.
+/// Deepest array/object nesting accepted, checked before parsing. Scenes need
+/// under 10; the cap keeps hostile nesting from costing memory and time.
 constexpr int max_json_depth = 64;
 
 /// Deepest nesting of [ and { outside strings (a scan, no recursion).
@@ -58,88 +63,74 @@ Json parse_json(std::string_view text) {
     }
 }
 
-void check_is_gltf(const Json& doc) {
-    if (!doc.is_object()) {
-        throw SceneError("not a glTF file: the top level must be an object (got " +
-                         json_type_name(doc) + ")");
-    }
-    const auto asset = doc.find("asset");
-    if (asset == doc.end() || !asset->is_object()) {
-        throw SceneError("not a glTF file: it has no asset object");
-    }
-    const auto version = asset->find("version");
-    if (version == asset->end() || !version->is_string() ||
-        version->get<std::string>().rfind("2.", 0) != 0) {
-        scene_fail("asset.version", "must be \"2.0\" (only glTF 2 is supported)");
-    }
-}
-
-/// `extras.snow` of a glTF object, or null.
-const Json* snow_extras(const Json& owner) {
-    const auto extras = owner.find("extras");
-    if (extras == owner.end() || !extras->is_object()) {
-        return nullptr;
-    }
-    const auto snow = extras->find("snow");
-    return snow == extras->end() ? nullptr : &*snow;
-}
-
-SceneDescription describe(const Json& doc, const tinygltf::Model& model) {
+/// The geometry with each instanced node's role and light, and the chosen
+/// scene's settings.
+SceneDescription describe(SceneGeometry geometry, const SceneSchema& schema) {
     SceneDescription d;
-    d.geometry = instance_scene(model);
-    const std::vector<LightSpec> lights = parse_lights(doc);
-    const Json no_nodes = Json::array();
-    const Json& nodes = doc.contains("nodes") ? doc.at("nodes") : no_nodes;
-    if (!nodes.is_array() || nodes.size() != model.nodes.size()) {
-        scene_fail("nodes", "must be an array of node objects");
+    for (const WorldNode& node : geometry.nodes) {
+        d.roles.push_back(schema.nodes[node.index]);
+        d.lights.push_back(schema.node_lights[node.index]);
     }
-    for (const WorldNode& node : d.geometry.nodes) {
-        const std::string path = "nodes[" + std::to_string(node.index) + "]";
-        const Json& json_node = nodes.at(node.index);
-        const Json* snow = snow_extras(json_node);
-        d.roles.push_back(snow ? parse_node_snow(*snow, path + ".extras.snow") : NodeSnow{});
-        const auto light = node_light(json_node, path, lights.size());
-        d.lights.push_back(light ? std::optional<LightSpec>(lights[*light]) : std::nullopt);
+    if (geometry.scene_index) {
+        d.settings = schema.scenes[*geometry.scene_index];
+        d.settings_path = scene_snow_path(*geometry.scene_index);
+    } else {
+        d.settings_path = "default scene settings (the file has no scenes)";
     }
-    const std::string scene_path = "scenes[" + std::to_string(d.geometry.scene_index) + "]";
-    d.settings_path = scene_path + ".extras.snow";
-    d.settings =
-        parse_scene_snow(snow_extras(doc.at("scenes").at(d.geometry.scene_index)), d.settings_path);
+    d.geometry = std::move(geometry);
     return d;
 }
 
-/// The whole pipeline on text already in memory; `folder` empty forbids files.
-SceneLoadResult load_text(std::string_view text, const std::string& name, const std::string& folder,
-                          const std::string& fallback_name, const SceneOverrides& overrides) {
+/// The pipeline on bytes already in memory; `folder` empty forbids files.
+void load_bytes(std::string_view bytes, const std::string& folder, bool must_be_glb,
+                const SceneOverrides& overrides, SceneLoadResult& result) {
+    if (bytes.size() > max_scene_file_bytes) {
+        throw SceneError("is " + std::to_string(bytes.size()) +
+                         " bytes; scene files may have at most " +
+                         std::to_string(max_scene_file_bytes));
+    }
+    const SceneSource source =
+        must_be_glb || is_glb(bytes) ? split_glb(bytes) : SceneSource{bytes, std::nullopt};
+    if (source.json.size() > max_scene_bytes) {
+        throw SceneError("has " + std::to_string(source.json.size()) +
+                         " bytes of JSON; scenes may have at most " +
+                         std::to_string(max_scene_bytes));
+    }
+    if (json_depth(source.json) > max_json_depth) {
+        throw SceneError("JSON nests deeper than " + std::to_string(max_json_depth) + " levels");
+    }
+    const Json doc = parse_json(source.json);
+    GltfDocument gltf = read_document(doc, result.warnings);
+    const SceneSchema schema = read_schema(doc);
+    load_buffers(gltf, {source.bin, folder}, result.warnings);
+    const SceneDescription d = describe(instance_scene(gltf, result.warnings), schema);
+    if (!d.geometry.scene_name.empty()) {
+        result.name = d.geometry.scene_name;
+    }
+    result.sim = build_scene(d, overrides);
+}
+
+/// Runs load_bytes() and turns any failure into the one error message.
+SceneLoadResult load(std::string_view bytes, const std::string& name, const std::string& folder,
+                     bool must_be_glb, const std::string& fallback_name,
+                     const SceneOverrides& overrides) {
     SceneLoadResult result;
+    result.name = fallback_name;
     try {
-        if (text.size() > max_scene_bytes) {
-            throw SceneError("is " + std::to_string(text.size()) +
-                             " bytes; scenes may have at most " + std::to_string(max_scene_bytes));
-        }
-        if (text.substr(0, 4) == "glTF") {
-            throw SceneError("binary glTF (.glb) is not supported; use .gltf");
-        }
-        if (json_depth(text) > max_json_depth) {
-            throw SceneError("JSON nests deeper than " + std::to_string(max_json_depth) +
-                             " levels");
-        }
-        const Json doc = parse_json(text);
-        check_is_gltf(doc);
-        check_uris(doc, !folder.empty());
-        const tinygltf::Model model = parse_gltf(text, folder);
-        const SceneDescription d = describe(doc, model);
-        result.name = d.geometry.scene_name.empty() ? fallback_name : d.geometry.scene_name;
-        result.sim = build_scene(d, overrides);
+        load_bytes(bytes, folder, must_be_glb, overrides, result);
     } catch (const SceneError& e) {
         result.error = name + ": " + e.what();
     } catch (const std::bad_alloc&) {
         result.error = name + ": out of memory while loading the scene";
-    } catch (const std::exception& e) { // EcsError, nlohmann type errors: still one clean message
+    } catch (const std::exception& e) { // EcsError, nlohmann errors: still one clean message
         result.error = name + ": " + e.what();
     }
     if (!result.error.empty()) {
         result.sim.reset();
+    }
+    for (std::string& w : result.warnings) {
+        w = name + ": " + w;
+        std::fprintf(stderr, "warning: %s\n", w.c_str());
     }
     return result;
 }
@@ -156,25 +147,27 @@ SceneLoadResult load_scene_file(const std::string& path, const SceneOverrides& o
         return result;
     }
     const std::uintmax_t size = fs::file_size(file, ec);
-    if (ec || size > max_scene_bytes) {
-        result.error = path + ": is " + std::to_string(size) + " bytes; scenes may have at most " +
-                       std::to_string(max_scene_bytes);
+    if (ec || size > max_scene_file_bytes) {
+        result.error = path + ": is " + std::to_string(size) +
+                       " bytes; scene files may have at most " +
+                       std::to_string(max_scene_file_bytes);
         return result;
     }
-    std::string text(static_cast<std::size_t>(size), '\0');
+    std::string bytes(static_cast<std::size_t>(size), '\0');
     std::ifstream in(file, std::ios::binary);
-    if (!in.read(text.data(), static_cast<std::streamsize>(size))) {
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) {
         result.error = path + ": cannot read the scene";
         return result;
     }
     const fs::path folder = fs::absolute(file, ec).parent_path();
-    return load_text(text, path, folder.string(), file.stem().string(), overrides);
+    return load(bytes, path, folder.string(), file.extension() == ".glb", file.stem().string(),
+                overrides);
 }
 
-SceneLoadResult load_scene_memory(std::string_view gltf_json, std::string_view name_for_errors,
+SceneLoadResult load_scene_memory(std::string_view bytes, std::string_view name_for_errors,
                                   const SceneOverrides& overrides) {
     const std::string name(name_for_errors);
-    return load_text(gltf_json, name, "", name, overrides);
+    return load(bytes, name, "", false, name, overrides);
 }
 
 } // namespace snow

@@ -1,14 +1,18 @@
-// The `extras.snow` schema: JSON → SurfaceDef, SimConfig, Emitter, Wind, Fog,
-// OcclusionCamera, SpectralSnow, camera and lights. Types are checked here;
-// value ranges by the simulation's own validate() functions (one place, shared
-// with the facade), whose messages are prefixed with the JSON path.
+// The `extras.snow` schema, one table per struct: JSON → SurfaceDef,
+// SimConfig, Emitter, Wind, Fog, OcclusionCamera, SpectralSnow, camera,
+// environment and lights. The tables check types and the ranges that only the
+// scene knows (camera, colours); the simulation's validate() functions check
+// the rest, and their messages are prefixed with the JSON path.
 #include "game/scene/scene_schema.hpp"
 
-#include "systems/validation.hpp"
+#include <cmath>
 
 namespace snow {
 
 namespace {
+
+constexpr auto reject = UnknownKeys::reject;
+constexpr auto ignore = UnknownKeys::ignore;
 
 /// Throws SceneError("prefix.message") when `message` (from validate()) is set.
 void check_valid(const std::string& message, const std::string& prefix) {
@@ -17,297 +21,274 @@ void check_valid(const std::string& message, const std::string& prefix) {
     }
 }
 
-SurfaceDef read_surface(JsonReader r) {
-    SurfaceDef d;
-    r.read("cell", d.cell);
-    r.read("edge_limit", d.edge_limit);
-    r.read("laplacian_limit", d.laplacian_limit);
-    r.read("slope_x", d.slope_x);
-    r.read("slope_z", d.slope_z);
-    r.read("spills", d.spills);
-    r.finish();
-    return d;
-}
+// --- nodes[i].extras.snow ----------------------------------------------------
 
-ColliderKind read_collider(const Json& j, const std::string& field) {
-    if (j == "box") {
-        return ColliderKind::box;
-    }
-    if (j == "sphere") {
-        return ColliderKind::sphere;
-    }
-    if (j == "mesh") {
-        return ColliderKind::mesh;
-    }
-    scene_fail(field, "must be \"box\", \"sphere\" or \"mesh\" (got " +
-                          (j.is_string() ? quoted(j.get<std::string>()) : json_type_name(j)) + ")");
-}
+constexpr Field<SurfaceDef> surface_fields[] = {
+    {"cell", &SurfaceDef::cell},
+    {"edge_limit", &SurfaceDef::edge_limit},
+    {"laplacian_limit", &SurfaceDef::laplacian_limit},
+    {"slope_x", &SurfaceDef::slope_x},
+    {"slope_z", &SurfaceDef::slope_z},
+    {"spills", &SurfaceDef::spills},
+};
 
-void read_simulation(JsonReader r, SceneSnow& s) {
-    SimConfig& c = s.config;
-    r.read("dt", c.dt);
-    r.read("seed", c.seed, 0, ~0ull);
-    r.read("max_flakes", c.max_flakes, 1, 16u << 20);
-    r.read("threads", c.threads, 1, 256);
-    r.read("gravity", c.gravity);
-    std::string integrator;
-    r.read("integrator", integrator);
-    if (r.has("integrator")) {
-        const auto i = parse_integrator(integrator);
-        if (!i) {
-            scene_fail(r.field("integrator"),
-                       "must be one of " + integrator_choices() + " (got \"" + integrator + "\")");
-        }
-        c.integrator = *i;
-    }
-    if (auto b = r.object("bounds")) {
-        if (!b->has("min") || !b->has("max")) {
-            scene_fail(b->path(), "needs both min and max");
-        }
-        b->read("min", c.bounds.min);
-        b->read("max", c.bounds.max);
-        b->finish();
-        s.has_bounds = true;
-    }
-    r.finish();
-}
+constexpr std::pair<std::string_view, ColliderKind> collider_kinds[] = {
+    {"box", ColliderKind::box}, {"sphere", ColliderKind::sphere}, {"mesh", ColliderKind::mesh}};
 
-Emitter read_emitter(JsonReader r) {
-    Emitter e;
-    r.read("rate", e.rate);
-    r.read("mass_min_g", e.mass_min_g);
-    r.read("mass_max_g", e.mass_max_g);
-    r.read("size_min", e.size_min);
-    r.read("size_max", e.size_max);
-    r.read("fall_speed_min", e.fall_speed_min);
-    r.read("fall_speed_max", e.fall_speed_max);
-    r.finish();
-    return e;
-}
+constexpr Field<NodeSnow> node_snow_fields[] = {
+    {"surface", &read_nested<&NodeSnow::surface, surface_fields, reject>},
+    {"collider", +[](const Json& j, const std::string& field,
+                     NodeSnow& n) { n.collider = read_choice(j, field, collider_kinds); }},
+};
 
-Wind read_wind(JsonReader r) {
-    Wind w;
-    r.read("base", w.base);
-    w.current = w.base;
-    r.read("walk", w.walk);
-    r.read("max_deviation", w.max_deviation);
-    r.read("gust_strength", w.gust_strength);
-    r.read("gust_rate", w.gust_rate);
-    r.read("gust_duration", w.gust_duration);
-    r.finish();
-    return w;
-}
+// --- scenes[s].extras.snow ---------------------------------------------------
 
-FogMode read_fog_mode(const JsonReader& r, const std::string& mode) {
-    if (mode == "exponential") {
-        return FogMode::exponential;
+constexpr Field<Aabb> bounds_fields[] = {
+    {"min", &Aabb::min, {}, true},
+    {"max", &Aabb::max, {}, true},
+};
+
+constexpr Field<SimConfig> simulation_fields[] = {
+    {"dt", &SimConfig::dt},
+    {"seed", &SimConfig::seed},
+    {"max_flakes", &SimConfig::max_flakes, {1.0, 16u << 20}},
+    {"threads", &SimConfig::threads, {1.0, 256.0}},
+    {"gravity", &SimConfig::gravity},
+    {"integrator",
+     +[](const Json& j, const std::string& field, SimConfig& c) {
+         const auto i = j.is_string() ? parse_integrator(j.get<std::string>()) : std::nullopt;
+         if (!i) {
+             scene_fail(field,
+                        "must be one of " + integrator_choices() + " (got " +
+                            (j.is_string() ? in_quotes(j.get<std::string>()) : json_type_name(j)) +
+                            ")");
+         }
+         c.integrator = *i;
+     }},
+    {"bounds", &read_nested<&SimConfig::bounds, bounds_fields, reject>},
+};
+
+constexpr Field<Emitter> emitter_fields[] = {
+    {"rate", &Emitter::rate},
+    {"mass_min_g", &Emitter::mass_min_g},
+    {"mass_max_g", &Emitter::mass_max_g},
+    {"size_min", &Emitter::size_min},
+    {"size_max", &Emitter::size_max},
+    {"fall_speed_min", &Emitter::fall_speed_min},
+    {"fall_speed_max", &Emitter::fall_speed_max},
+};
+
+constexpr Field<Wind> wind_fields[] = {
+    {"base",
+     +[](const Json& j, const std::string& field, Wind& w) {
+         read_value(j, field, {}, w.base);
+         w.current = w.base; // the wind starts at its mean
+     }},
+    {"walk", &Wind::walk},
+    {"max_deviation", &Wind::max_deviation},
+    {"gust_strength", &Wind::gust_strength},
+    {"gust_rate", &Wind::gust_rate},
+    {"gust_duration", &Wind::gust_duration},
+};
+
+constexpr std::pair<std::string_view, FogMode> fog_modes[] = {{"exponential", FogMode::exponential},
+                                                              {"half_life", FogMode::half_life},
+                                                              {"layered", FogMode::layered}};
+
+constexpr Field<FogPuff> puff_fields[] = {
+    {"center", &FogPuff::center},       {"sigma", &FogPuff::sigma}, {"density", &FogPuff::density},
+    {"frequency", &FogPuff::frequency}, {"phase", &FogPuff::phase},
+};
+
+constexpr Field<Fog> fog_fields[] = {
+    {"mode", +[](const Json& j, const std::string& field,
+                 Fog& f) { f.mode = read_choice(j, field, fog_modes); }},
+    {"color", &Fog::color},
+    {"density", &Fog::density},
+    {"half_distance", &Fog::half_distance},
+    {"layer_bottom", &Fog::layer_bottom},
+    {"layer_top", &Fog::layer_top},
+    {"layer_density", &Fog::layer_density},
+    {"puffs", &read_nested<&Fog::puffs, puff_fields, reject>},
+};
+
+constexpr Field<OcclusionCamera> occlusion_fields[] = {
+    {"resolution", &OcclusionCamera::resolution, {1.0, 4096.0}},
+    {"tilt", &OcclusionCamera::tilt},
+};
+
+constexpr Field<SpectralSnow> spectral_fields[] = {
+    {"size_xy", &SpectralSnow::size_xy, {1.0, 1u << 16}},
+    {"size_t", &SpectralSnow::size_t, {1.0, 1u << 16}},
+    {"speed", &SpectralSnow::speed},
+    {"band_low", &SpectralSnow::band_low},
+    {"band_high", &SpectralSnow::band_high},
+    {"opacity", &SpectralSnow::opacity},
+    {"start_distance", &SpectralSnow::start_distance},
+};
+
+constexpr Field<CameraDef> camera_fields[] = {
+    {"position", &CameraDef::position},
+    {"target", &CameraDef::target},
+    {"fov_y_deg", &CameraDef::fov_y_deg, {0.0, 170.0, true}},
+    {"near_plane", &CameraDef::near_plane, above_zero},
+    {"far_plane", &CameraDef::far_plane, above_zero},
+};
+
+constexpr Field<Environment> environment_fields[] = {
+    {"ambient", &Environment::ambient, at_least_zero},
+    {"sky", &Environment::sky, at_least_zero},
+};
+
+constexpr Field<SceneSnow> scene_snow_fields[] = {
+    {"simulation",
+     +[](const Json& j, const std::string& field, SceneSnow& s) {
+         read_fields(j, field, simulation_fields, reject, s.config);
+         s.has_bounds = j.contains("bounds");
+     }},
+    {"emitter", &read_nested<&SceneSnow::emitter, emitter_fields, reject>},
+    {"wind", &read_nested<&SceneSnow::wind, wind_fields, reject>},
+    {"fog", &read_nested<&SceneSnow::fog, fog_fields, reject>},
+    {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_fields, reject>},
+    {"spectral", &read_nested<&SceneSnow::spectral, spectral_fields, reject>},
+    {"camera",
+     +[](const Json& j, const std::string& field, SceneSnow& s) {
+         s.camera = read_struct(j, field, camera_fields, reject);
+         if (!(s.camera.far_plane > s.camera.near_plane)) {
+             scene_fail(field + ".far_plane",
+                        "must be > near_plane (got " + number_text(s.camera.far_plane) + ")");
+         }
+         if (s.camera.position == s.camera.target) {
+             scene_fail(field + ".target", "must differ from position");
+         }
+     }},
+    {"environment", &read_nested<&SceneSnow::environment, environment_fields, reject>},
+};
+
+/// Reads one scene's `extras.snow` and checks its effects with the
+/// simulation's validate() functions.
+SceneSnow read_scene_snow(const Json& j, const std::string& path) {
+    const SceneSnow s = read_struct(j, path, scene_snow_fields, reject);
+    check_valid(validate(s.config), path);
+    if (s.emitter) {
+        check_valid(validate(*s.emitter), path);
     }
-    if (mode == "half_life") {
-        return FogMode::half_life;
+    if (s.wind) {
+        check_valid(validate(*s.wind), path);
     }
-    if (mode == "layered") {
-        return FogMode::layered;
+    if (s.fog) {
+        check_valid(validate(*s.fog), path);
     }
-    scene_fail(r.field("mode"),
-               "must be \"exponential\", \"half_life\" or \"layered\" (got \"" + mode + "\")");
-}
-
-Fog read_fog(JsonReader r) {
-    Fog f;
-    std::string mode = "exponential";
-    r.read("mode", mode);
-    f.mode = read_fog_mode(r, mode);
-    r.read("color", f.color);
-    r.read("density", f.density);
-    r.read("half_distance", f.half_distance);
-    r.read("layer_bottom", f.layer_bottom);
-    r.read("layer_top", f.layer_top);
-    r.read("layer_density", f.layer_density);
-    if (const Json* puffs = r.array("puffs")) {
-        for (std::size_t i = 0; i < puffs->size(); ++i) {
-            JsonReader p((*puffs)[i], r.field("puffs") + "[" + std::to_string(i) + "]");
-            FogPuff puff;
-            p.read("center", puff.center);
-            p.read("sigma", puff.sigma);
-            p.read("density", puff.density);
-            p.read("frequency", puff.frequency);
-            p.read("phase", puff.phase);
-            p.finish();
-            f.puffs.push_back(puff);
-        }
+    if (s.spectral) {
+        check_valid(validate(*s.spectral), path);
     }
-    r.finish();
-    return f;
-}
-
-OcclusionCamera read_occlusion(JsonReader r) {
-    OcclusionCamera o;
-    r.read("resolution", o.resolution, 1, 4096);
-    r.read("tilt", o.tilt);
-    r.finish();
-    return o;
-}
-
-SpectralSnow read_spectral(JsonReader r) {
-    SpectralSnow s;
-    r.read("size_xy", s.size_xy, 1, 1u << 16);
-    r.read("size_t", s.size_t, 1, 1u << 16);
-    r.read("speed", s.speed);
-    r.read("band_low", s.band_low);
-    r.read("band_high", s.band_high);
-    r.read("opacity", s.opacity);
-    r.read("start_distance", s.start_distance);
-    r.finish();
     return s;
 }
 
-CameraDef read_camera(JsonReader r) {
-    CameraDef c;
-    r.read("position", c.position);
-    r.read("target", c.target);
-    r.read("fov_y_deg", c.fov_y_deg);
-    r.read("near_plane", c.near_plane);
-    r.read("far_plane", c.far_plane);
-    r.finish();
-    std::string e;
-    check::positive(e, r.field("fov_y_deg"), c.fov_y_deg);
-    check::at_most(e, r.field("fov_y_deg"), c.fov_y_deg, 170.0);
-    check::positive(e, r.field("near_plane"), c.near_plane);
-    if (!(c.far_plane > c.near_plane)) {
-        check::fail(e, r.field("far_plane"), "> near_plane", c.far_plane);
+// --- KHR_lights_punctual -----------------------------------------------------
+
+constexpr Field<LightSpec> light_fields[] = {
+    {"type",
+     +[](const Json& j, const std::string& field, LightSpec&) {
+         if (j != "point") {
+             scene_fail(field,
+                        "must be \"point\" (only point lights are supported; got " +
+                            (j.is_string() ? in_quotes(j.get<std::string>()) : json_type_name(j)) +
+                            ")");
+         }
+     },
+     {},
+     true},
+    {"color", &LightSpec::color, at_least_zero},
+    {"intensity", &LightSpec::intensity, at_least_zero},
+};
+
+/// A node's or the file's `extensions.KHR_lights_punctual`, or null.
+const Json* khr_lights(const Json& owner) {
+    const auto ext = owner.find("extensions");
+    if (ext == owner.end() || !ext->is_object()) {
+        return nullptr;
     }
-    if (c.position == c.target) {
-        check::fail(e, r.field("target"), "different from position", c.target.x);
-    }
-    if (!e.empty()) {
-        throw SceneError(e);
-    }
-    return c;
+    const auto khr = ext->find("KHR_lights_punctual");
+    return khr == ext->end() ? nullptr : &*khr;
 }
 
-glm::vec3 read_colour(JsonReader& r, std::string_view key, glm::vec3 colour) {
-    r.read(key, colour);
-    std::string e;
-    for (int i = 0; i < 3; ++i) {
-        check::non_negative(e, r.field(key) + "[" + std::to_string(i) + "]", colour[i]);
+/// `extras.snow` of a glTF object, or null.
+const Json* snow_extras(const Json& owner) {
+    const auto extras = owner.find("extras");
+    if (extras == owner.end() || !extras->is_object()) {
+        return nullptr;
     }
-    if (!e.empty()) {
-        throw SceneError(e);
-    }
-    return colour;
+    const auto snow = extras->find("snow");
+    return snow == extras->end() ? nullptr : &*snow;
 }
 
-Environment read_environment(JsonReader r) {
-    Environment env;
-    env.ambient = read_colour(r, "ambient", env.ambient);
-    env.sky = read_colour(r, "sky", env.sky);
-    r.finish();
-    return env;
+/// The file's lights: `extensions.KHR_lights_punctual.lights`.
+std::vector<LightSpec> read_lights(const Json& doc) {
+    const Json* khr = khr_lights(doc);
+    if (khr == nullptr) {
+        return {};
+    }
+    const std::string path = "extensions.KHR_lights_punctual";
+    require_object(*khr, path);
+    const auto list = khr->find("lights");
+    return list == khr->end() ? std::vector<LightSpec>{}
+                              : read_list(*list, path + ".lights", light_fields, ignore);
+}
+
+/// The light a node carries (`extensions.KHR_lights_punctual.light`), if any.
+std::optional<LightSpec> node_light(const Json& node, const std::string& path,
+                                    const std::vector<LightSpec>& lights) {
+    const Json* khr = khr_lights(node);
+    if (khr == nullptr) {
+        return std::nullopt;
+    }
+    struct Ref {
+        std::optional<std::uint64_t> light;
+    };
+    static constexpr Field<Ref> ref_fields[] = {{"light", &Ref::light, {}, true}};
+    const std::string at = path + ".extensions.KHR_lights_punctual";
+    const Ref ref = read_struct(*khr, at, ref_fields, ignore);
+    if (*ref.light >= lights.size()) {
+        scene_fail(at + ".light", lights.empty()
+                                      ? "refers to a light but the file declares none"
+                                      : "must be in [0, " + std::to_string(lights.size() - 1) +
+                                            "] (got " + std::to_string(*ref.light) + ")");
+    }
+    return lights[*ref.light];
+}
+
+/// The array `key` of the document (checked by read_document), or an empty one.
+const Json& top_list(const Json& doc, const char* key) {
+    static const Json empty = Json::array();
+    const auto it = doc.find(key);
+    return it == doc.end() ? empty : *it;
 }
 
 } // namespace
 
-NodeSnow parse_node_snow(const Json& snow, const std::string& path) {
-    JsonReader r(snow, path);
-    NodeSnow n;
-    if (auto s = r.object("surface")) {
-        n.surface = read_surface(*s);
-    }
-    if (const Json* c = r.value("collider")) {
-        n.collider = read_collider(*c, r.field("collider"));
-    }
-    r.finish();
-    return n;
+std::string scene_snow_path(std::size_t scene) {
+    return "scenes[" + std::to_string(scene) + "].extras.snow";
 }
 
-SceneSnow parse_scene_snow(const Json* snow, const std::string& path) {
-    SceneSnow s;
-    if (snow == nullptr) {
-        return s;
+SceneSchema read_schema(const Json& doc) {
+    SceneSchema schema;
+    const std::vector<LightSpec> lights = read_lights(doc);
+    const Json& nodes = top_list(doc, "nodes");
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const std::string path = "nodes[" + std::to_string(i) + "]";
+        const Json* snow = snow_extras(nodes[i]);
+        schema.nodes.push_back(
+            snow ? read_struct(*snow, path + ".extras.snow", node_snow_fields, reject)
+                 : NodeSnow{});
+        schema.node_lights.push_back(node_light(nodes[i], path, lights));
     }
-    JsonReader r(*snow, path);
-    if (auto sim = r.object("simulation")) {
-        read_simulation(*sim, s);
+    const Json& scenes = top_list(doc, "scenes");
+    for (std::size_t s = 0; s < scenes.size(); ++s) {
+        const Json* snow = snow_extras(scenes[s]);
+        schema.scenes.push_back(snow ? read_scene_snow(*snow, scene_snow_path(s)) : SceneSnow{});
     }
-    check_valid(validate(s.config), path);
-    if (auto e = r.object("emitter")) {
-        s.emitter = read_emitter(*e);
-        check_valid(validate(*s.emitter), path);
-    }
-    if (auto w = r.object("wind")) {
-        s.wind = read_wind(*w);
-        check_valid(validate(*s.wind), path);
-    }
-    if (auto f = r.object("fog")) {
-        s.fog = read_fog(*f);
-        check_valid(validate(*s.fog), path);
-    }
-    if (auto o = r.object("occlusion")) {
-        s.occlusion = read_occlusion(*o);
-    }
-    if (auto sp = r.object("spectral")) {
-        s.spectral = read_spectral(*sp);
-        check_valid(validate(*s.spectral), path);
-    }
-    if (auto c = r.object("camera")) {
-        s.camera = read_camera(*c);
-    }
-    if (auto env = r.object("environment")) {
-        s.environment = read_environment(*env);
-    }
-    r.finish();
-    return s;
-}
-
-std::vector<LightSpec> parse_lights(const Json& doc) {
-    std::vector<LightSpec> lights;
-    const auto ext = doc.find("extensions");
-    if (ext == doc.end() || !ext->is_object() || !ext->contains("KHR_lights_punctual")) {
-        return lights;
-    }
-    const std::string path = "extensions.KHR_lights_punctual";
-    JsonReader khr(ext->at("KHR_lights_punctual"), path);
-    const Json* list = khr.array("lights");
-    if (list == nullptr) {
-        return lights;
-    }
-    for (std::size_t i = 0; i < list->size(); ++i) {
-        JsonReader r((*list)[i], path + ".lights[" + std::to_string(i) + "]");
-        std::string type;
-        r.read("type", type);
-        if (type != "point") {
-            scene_fail(r.field("type"),
-                       "must be \"point\" (only point lights are supported; got \"" + type + "\")");
-        }
-        LightSpec l;
-        l.color = read_colour(r, "color", l.color);
-        r.read("intensity", l.intensity);
-        std::string e;
-        check::non_negative(e, r.field("intensity"), l.intensity);
-        if (!e.empty()) {
-            throw SceneError(e);
-        }
-        lights.push_back(l);
-    }
-    return lights;
-}
-
-std::optional<std::size_t> node_light(const Json& node, const std::string& path,
-                                      std::size_t light_count) {
-    const auto ext = node.find("extensions");
-    if (ext == node.end() || !ext->is_object() || !ext->contains("KHR_lights_punctual")) {
-        return std::nullopt;
-    }
-    JsonReader r(ext->at("KHR_lights_punctual"), path + ".extensions.KHR_lights_punctual");
-    if (!r.has("light")) {
-        scene_fail(r.path(), "needs a light index");
-    }
-    if (light_count == 0) {
-        scene_fail(r.field("light"), "refers to a light but the file declares none");
-    }
-    std::uint64_t index = 0;
-    r.read("light", index, 0, light_count - 1);
-    return static_cast<std::size_t>(index);
+    return schema;
 }
 
 } // namespace snow

@@ -1,9 +1,10 @@
 /// @file scene_schema.hpp
-/// @brief The `extras.snow` schema (docs/scenes.md) read into the simulation's
-/// own def structs (internal to snow::scene). Geometry comes from scene_gltf.
+/// @brief The `extras.snow` schema (docs/scenes.md) and KHR_lights_punctual,
+/// read into the simulation's own def structs by one field table per struct
+/// (internal to snow::scene). Geometry comes from scene_geometry.
 #pragma once
 
-#include "game/scene/scene_json.hpp"
+#include "game/scene/scene_fields.hpp"
 #include "systems/simulation.hpp"
 
 #include <cstdint>
@@ -42,14 +43,21 @@ struct LightSpec {
     float intensity = 1.0f;
 };
 
-/// Reads `nodes[i].extras.snow`; `path` is that field's name for errors.
-[[nodiscard]] NodeSnow parse_node_snow(const Json& snow, const std::string& path);
-/// Reads `scenes[i].extras.snow`; null gives the defaults (no effects).
-[[nodiscard]] SceneSnow parse_scene_snow(const Json* snow, const std::string& path);
-/// Reads the document's `extensions.KHR_lights_punctual.lights`.
-[[nodiscard]] std::vector<LightSpec> parse_lights(const Json& doc);
-/// The light index a node refers to (`extensions.KHR_lights_punctual.light`), if any.
-[[nodiscard]] std::optional<std::size_t> node_light(const Json& node, const std::string& path,
-                                                    std::size_t light_count);
+/// Everything the schema says about a file, indexed like the file's arrays.
+struct SceneSchema {
+    std::vector<NodeSnow> nodes;                       ///< per `nodes[i]`
+    std::vector<std::optional<LightSpec>> node_lights; ///< per `nodes[i]`: the light it carries
+    std::vector<SceneSnow> scenes;                     ///< per `scenes[s]`
+};
+
+/// The JSON path of `scenes[s].extras.snow`, which prefixes its errors.
+[[nodiscard]] std::string scene_snow_path(std::size_t scene);
+
+/// Reads every node's and scene's `extras.snow` and the lights of a parsed
+/// glTF file (whose structure read_document() has checked). Types, ranges and
+/// unknown keys are checked by the tables; the simulation's own validate()
+/// functions check the effects' values (one place, shared with the facade).
+/// Extras other than `snow` are ignored. Throws SceneError naming the field.
+[[nodiscard]] SceneSchema read_schema(const Json& doc);
 
 } // namespace snow
