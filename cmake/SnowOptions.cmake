@@ -15,6 +15,15 @@ function(snow_set_options target)
     endif()
 endfunction()
 
+# flake_pool.hpp's allocator calls the sized aligned ::operator delete, which
+# Clang 14 declares only under -fsized-deallocation (GCC: on from C++14). The
+# header is public, so the flag is a usage requirement: PUBLIC, and exported
+# with the installed target, evaluated for the consumer's compiler.
+function(snow_require_sized_deallocation target)
+    target_compile_options(${target} PUBLIC
+        $<$<COMPILE_LANG_AND_ID:CXX,Clang,AppleClang>:-fsized-deallocation>)
+endfunction()
+
 # Generates ${out} (a .cpp) defining snow::${symbol}() returning ${input}'s bytes.
 function(snow_embed_file input out symbol)
     add_custom_command(OUTPUT ${out}

@@ -20,6 +20,8 @@
 #include <limits>
 #include <vector>
 
+#include <glm/common.hpp>
+
 namespace snow {
 
 namespace {
@@ -71,7 +73,11 @@ struct Context {
 /// The flake may leave the 3×3 cells around it this tick, so the grid's
 /// reach tables cannot clear it (NaN counts as fast).
 bool is_fast(const Context& c, float vx, float vy, float vz) {
-    return !(std::abs(vx) < c.fast_x) | !(std::abs(vz) < c.fast_z) | !(std::abs(vy) < c.fast_y);
+    // All three tests, no short cut: the caller's loop stays branch-free.
+    const bool slow_x = std::abs(vx) < c.fast_x;
+    const bool slow_y = std::abs(vy) < c.fast_y;
+    const bool slow_z = std::abs(vz) < c.fast_z;
+    return !(slow_x & slow_y & slow_z);
 }
 
 /// Result of the per-flake tests for a flake that is still inside the bounds.
@@ -116,9 +122,10 @@ struct BoxContact {
 /// False when the segment never reaches the interior or is leaving it.
 bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1, BoxContact& k) {
     // The path's bounding box misses the open box: the usual case, no divisions.
-    if ((std::max(p0.x, p1.x) <= b.min.x) | (std::min(p0.x, p1.x) >= b.max.x) |
-        (std::max(p0.y, p1.y) <= b.min.y) | (std::min(p0.y, p1.y) >= b.max.y) |
-        (std::max(p0.z, p1.z) <= b.min.z) | (std::min(p0.z, p1.z) >= b.max.z)) {
+    const glm::vec3 lo = glm::min(p0, p1);
+    const glm::vec3 hi = glm::max(p0, p1);
+    if ((hi.x <= b.min.x) | (lo.x >= b.max.x) | (hi.y <= b.min.y) | (lo.y >= b.max.y) |
+        (hi.z <= b.min.z) | (lo.z >= b.max.z)) {
         return false;
     }
     if (strictly_inside(b, p0)) {
