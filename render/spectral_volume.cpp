@@ -1,6 +1,7 @@
 #include "render/spectral_volume.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 #include <glm/trigonometric.hpp>
 
@@ -12,10 +13,6 @@
 namespace snow {
 
 namespace {
-
-/// Draws of the spectral volume: render-only, apart from every simulation
-/// stream of ecs/rng.hpp (which has no named entry for it yet).
-constexpr Stream spectral_stream = static_cast<Stream>(2000);
 
 /// Position of frequency k (possibly negative) along an axis of n samples.
 std::size_t wrap(int k, std::uint32_t n) {
@@ -58,7 +55,7 @@ std::vector<Complex> spectral_spectrum(const SpectralSnow& s, std::uint64_t seed
             const RngKey key{
                 seed, 0,
                 static_cast<std::uint32_t>((ky + half) * static_cast<int>(n) + (kx + half)),
-                spectral_stream};
+                random_stream::spectral_volume};
             const double phase = 2.0 * std::numbers::pi * rng_uniform(key, 0);
             const double c = c_max * (1.0 - spectral_speed_spread * rng_uniform(key, 1));
             const int kt = spectral_temporal_frequency(kx, ky, c);

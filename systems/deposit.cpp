@@ -9,6 +9,7 @@
 #include "systems/flake_pool.hpp"
 #include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
@@ -394,7 +395,8 @@ void deposit_system(World& w) {
     for (std::size_t c = 0; c < chunks; ++c) {
         for (const LandingRecord& r : d->chunks[c]) {
             SnowSurface& s = surfaces[r.surface];
-            const std::size_t dst = roll_target(s, r.cell, {cfg.seed, tick, r.slot, Stream::roll});
+            const std::size_t dst =
+                roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];
             s.mark_dirty(static_cast<std::uint32_t>(dst % s.nx),
                          static_cast<std::uint32_t>(dst / s.nx));

@@ -2,6 +2,7 @@
 // 003 §IV at their stated frequencies, surface validation, concentrated
 // landing (seed 002 §4/§6) and thread-count independence.
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/simulation.hpp"
 #include "systems/units.hpp"
 
@@ -352,7 +353,7 @@ std::unique_ptr<Simulation> busy(unsigned threads) {
     sim->add_surface(roof, box);
     sim->add_surface(flat(2.0f, 2.0f, 1.0f, 0.05f, 0.3f));
     for (std::uint32_t i = 0; i < 40000; ++i) {
-        const RngKey k{99, 0, i, Stream::test};
+        const RngKey k{99, 0, i, random_stream::test};
         place_flake(*sim,
                     {rng_range(k, 0, -3.9f, 3.9f), rng_range(k, 1, 0.0f, 1.6f),
                      rng_range(k, 2, -3.9f, 3.9f)},
