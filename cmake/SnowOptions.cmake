@@ -1,5 +1,5 @@
 # Project-wide compile settings, applied per target with snow_set_options().
-# Determinism (DESIGN.md): never -ffast-math; -ffp-contract=off so no FMA fusion
+# Determinism (docs/design.md "Determinism"): never -ffast-math; -ffp-contract=off so no FMA fusion
 # changes results between scalar/SIMD or Debug/Release builds.
 function(snow_set_options target)
     target_compile_options(${target} PRIVATE

@@ -1,5 +1,5 @@
 // tinygltf with its file system fenced in and image decoding off. History
-// (RELIABILITY.md): CVE-2022-3008 (wordexp on URIs), `../` traversal (#373),
+// (docs/design.md "Bad input"): CVE-2022-3008 (wordexp on URIs), `../` traversal (#373),
 // .glb heap overflows (#372, #363). So: ASCII only, our own fs callbacks that
 // resolve every path and refuse anything outside the scene's folder, and a
 // no-op image loader (the simulation needs no textures; stb_image never runs).
@@ -166,7 +166,7 @@ tinygltf::Model parse_gltf(std::string_view text, const std::string& folder) {
     if (!ok || !err.empty()) {
         throw SceneError("glTF error: " + first_line(err.empty() ? "tinygltf failed" : err));
     }
-    // A missing image, for one, is only a warning in tinygltf (TOOLCHAIN.md).
+    // A missing image, for one, is only a warning in tinygltf (docs/toolchain.md).
     if (!warn.empty()) {
         throw SceneError("glTF warning (treated as an error): " + first_line(warn));
     }

@@ -1,5 +1,5 @@
 /// @file scene_gltf.hpp
-/// @brief tinygltf behind a fence (RELIABILITY.md "Loader security"): ASCII
+/// @brief tinygltf behind a fence (docs/design.md "Bad input"): ASCII
 /// glTF only, no image decoding, file access only inside the scene's folder
 /// (internal to snow::scene).
 #pragma once

@@ -1,4 +1,4 @@
-// integrate: F = m·g + k·(w − v), a = F/m (seeds 002 §3, 003 §III.C), one
+// integrate: F = m·g + k·(w − v), a = F/m ([WF §3], [ZCL §III.C]), one
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //

@@ -1,5 +1,5 @@
-// spawn: inactive flakes activate (seed 002 §4) on the top and upwind sides
-// of the simulation bounds (seed 002 §5), with mass, size and fall speed drawn
+// spawn: inactive flakes activate [WF §4] on the top and upwind sides
+// of the simulation bounds [WF §5], with mass, size and fall speed drawn
 // from the emitter. Every draw is keyed by (seed, tick, slot, stream).
 #include "ecs/rng.hpp"
 #include "systems/emitter.hpp"

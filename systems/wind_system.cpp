@@ -1,5 +1,5 @@
 // wind: one global vector doing a bounded random walk around its base
-// (seed 002 §6 "allowed to change by small random amounts"), plus optional gusts.
+// ([WF §6] "allowed to change by small random amounts"), plus optional gusts.
 #include "ecs/rng.hpp"
 #include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"

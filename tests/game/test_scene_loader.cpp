@@ -214,7 +214,7 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_EQ(on_box, 2);
     EXPECT_EQ(sloped, 2);
 
-    // Seed 002 §5: white above the house, blue nearer the camera, yellow on the right.
+    // [WF §5]: white above the house, blue nearer the camera, yellow on the right.
     int white = 0, blue = 0, yellow = 0;
     w.each<PointLight>([&](Entity, const PointLight& l) {
         white += l.color == glm::vec3(1.0f) && l.position.y > 8.0f;

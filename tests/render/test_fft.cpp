@@ -1,5 +1,5 @@
 // The project's radix-2 FFT (render/fft.hpp), used for the spectral snow
-// volume of seed 000: against a naive DFT, round trips, 3-D composition.
+// volume of [LZ]: against a naive DFT, round trips, 3-D composition.
 #include "ecs/rng.hpp"
 #include "render/fft.hpp"
 #include "systems/random_streams.hpp"

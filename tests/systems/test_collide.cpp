@@ -1,4 +1,4 @@
-// collide_system against bounds, spheres, boxes and mesh tops (seed 002 §4, seed 004).
+// collide_system against bounds, spheres, boxes and mesh tops ([WF §4], [SKY]).
 #include "ecs/rng.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/random_streams.hpp"

@@ -1,6 +1,6 @@
-// deposit: landing on the right surface and cell, the rolling rules of seed
-// 003 §IV at their stated frequencies, surface validation, concentrated
-// landing (seed 002 §4/§6) and thread-count independence.
+// deposit: landing on the right surface and cell, the rolling rules of
+// [ZCL §IV] at their stated frequencies, surface validation, concentrated
+// landing [WF §4, §6] and thread-count independence.
 #include "ecs/rng.hpp"
 #include "systems/random_streams.hpp"
 #include "systems/simulation.hpp"
@@ -304,7 +304,7 @@ TEST(Deposit, RollsAtTheGridEdgeUseOnlyExistingNeighbours) {
 }
 
 TEST(Deposit, ConcentratedLandingStaysBounded) {
-    // Seed 002 §4/§6: heavy flakes hitting one spot made the field blow up.
+    // [WF §4, §6]: heavy flakes hitting one spot made the field blow up.
     // 100 000 units on one cell in four ticks, through the whole tick.
     Simulation sim(small_config(256));
     const Entity e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
