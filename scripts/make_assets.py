@@ -6,13 +6,13 @@
 Standard library only. Output is deterministic: running it again rewrites
 the same bytes (--check exits 1 if a file would change). Scenes:
 
-  village.gltf          seed 002's test scene: ground, a house with a pitched
+  village.gltf          the test scene of [WF §5]: ground, a house with a pitched
                         roof (two sloped mesh colliders with sloped surfaces),
                         a porch roof under its lee eave, a flat-roofed garage,
                         a fence, a three-sphere snowman, three coloured point
                         lights (white above the house, blue nearer the camera,
-                        yellow on the right; seed 002 section 5), steady wind
-                        along +x, exponential fog, an occlusion camera.
+                        yellow on the right), steady wind along +x,
+                        exponential fog, an occlusion camera.
   village_effects.gltf  the village plus the spectral far-field layer, gusts
                         and layered fog with a puff.
   minimal.gltf          ground and an emitter only: no wind, fog, occlusion or

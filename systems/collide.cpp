@@ -1,5 +1,5 @@
-// collide: flakes against the bounds, spheres, boxes and mesh tops (seed 002
-// §4; meshes through the sky map of seed 004). Detection runs in parallel over
+// collide: flakes against the bounds, spheres, boxes and mesh tops ([WF §4];
+// meshes through the sky map of [SKY]). Detection runs in parallel over
 // fixed chunks of slots; removals are applied afterwards in slot order, so the
 // free stack and the state hash do not depend on the thread count.
 #include "systems/collider_grid.hpp"
@@ -19,6 +19,8 @@
 #include <cstring>
 #include <limits>
 #include <vector>
+
+#include <glm/common.hpp>
 
 namespace snow {
 
@@ -71,7 +73,11 @@ struct Context {
 /// The flake may leave the 3×3 cells around it this tick, so the grid's
 /// reach tables cannot clear it (NaN counts as fast).
 bool is_fast(const Context& c, float vx, float vy, float vz) {
-    return !(std::abs(vx) < c.fast_x) | !(std::abs(vz) < c.fast_z) | !(std::abs(vy) < c.fast_y);
+    // All three tests, no short cut: the caller's loop stays branch-free.
+    const bool slow_x = std::abs(vx) < c.fast_x;
+    const bool slow_y = std::abs(vy) < c.fast_y;
+    const bool slow_z = std::abs(vz) < c.fast_z;
+    return !(slow_x & slow_y & slow_z);
 }
 
 /// Result of the per-flake tests for a flake that is still inside the bounds.
@@ -116,9 +122,10 @@ struct BoxContact {
 /// False when the segment never reaches the interior or is leaving it.
 bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1, BoxContact& k) {
     // The path's bounding box misses the open box: the usual case, no divisions.
-    if ((std::max(p0.x, p1.x) <= b.min.x) | (std::min(p0.x, p1.x) >= b.max.x) |
-        (std::max(p0.y, p1.y) <= b.min.y) | (std::min(p0.y, p1.y) >= b.max.y) |
-        (std::max(p0.z, p1.z) <= b.min.z) | (std::min(p0.z, p1.z) >= b.max.z)) {
+    const glm::vec3 lo = glm::min(p0, p1);
+    const glm::vec3 hi = glm::max(p0, p1);
+    if ((hi.x <= b.min.x) | (lo.x >= b.max.x) | (hi.y <= b.min.y) | (lo.y >= b.max.y) |
+        (hi.z <= b.min.z) | (lo.z >= b.max.z)) {
         return false;
     }
     if (strictly_inside(b, p0)) {
@@ -257,7 +264,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             break;
         }
         if ((f.item & ColliderGrid::sphere_tag) != 0) {
-            return Outcome::sphere; // seed 002 §4: the sphere eliminates it
+            return Outcome::sphere; // [WF §4]: the sphere eliminates it
         }
         const GridBox& b = g.boxes[f.item];
         const BoxContact& k = f.box;
@@ -265,7 +272,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             done = true;
             return land_on_top(c, b.surf_begin, b.surf_end, k.at, p, v, moved);
         }
-        // Seed 002 §4: to the nearest point outside (on the face); the motion
+        // [WF §4]: to the nearest point outside (on the face); the motion
         // along the face is kept, so the flake slides and drifts build at
         // windward bases.
         p[k.axis] = k.at[k.axis];
@@ -275,7 +282,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
     return Outcome::keep;
 }
 
-/// A mesh top from the sky map (seed 004): only a flake that crossed the
+/// A mesh top from the sky map [SKY]: only a flake that crossed the
 /// top from above this tick lands; one that came in sideways is left alone.
 Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v, bool& moved) {
     std::uint32_t ti = 0, tj = 0;
@@ -345,7 +352,7 @@ void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __
     const float dt = c.dt;
     for (std::size_t i = b; i < e; ++i) {
         const float x = px[i], y = py[i], z = pz[i];
-        // Seed 002 §4: flakes outside the world's bounds are deactivated (NaN too).
+        // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
         const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];

@@ -1,7 +1,7 @@
-// occlusion: the sky camera of seed 004. An orthographic depth map from above
+// occlusion: the sky camera of [SKY]. An orthographic depth map from above
 // over the bounds' XZ extent, rasterised on the CPU: per texel the highest
 // geometry and its entity. With a tilt the rays lean downwind, like the flakes,
-// so lee sides get less exposure (seed 004 "Limitations" 2: wind). Refreshed
+// so lee sides get less exposure ([SKY Limitations 2]: wind). Refreshed
 // only when the geometry or the quantised wind direction changed.
 #include "systems/occlusion.hpp"
 #include "systems/colliders.hpp"

@@ -1,8 +1,8 @@
-// redistribute: the Laplacian cap of seed 002 §3. Where a cell stands more
+// redistribute: the Laplacian cap of [WF §3]. Where a cell stands more
 // than the cap above its neighbours (n·h_c − Σh_nb > limit, in integer levels),
 // snow moves from it to its lower neighbours.
 //
-// Seed 002 §4/§6 reports blow-ups when snow lands faster than one smoothing
+// [WF §4, §6] reports blow-ups when snow lands faster than one smoothing
 // step per tick can spread it. Here a tick sub-iterates until no snow moves
 // (or an iteration cap, then it goes on next tick), and every step is a
 // two-buffer (Jacobi) update whose per-edge flow is at most 1/8 of the height
@@ -162,7 +162,7 @@ std::int64_t cell_outflow(TileGrid& g, std::uint32_t ix, std::uint32_t iz) {
         sum += d[k];
         lower_sum += d[k] > 0 ? d[k] : 0;
     }
-    // seed 002 §3: n·h_c − Σh_nb (the discrete Laplacian, grid edges use the neighbours they have).
+    // [WF §3]: n·h_c − Σh_nb (the discrete Laplacian, grid edges use the neighbours they have).
     const std::int64_t excess = sum - s.laplacian_limit_units;
     if (excess <= 0) {
         return 0;

@@ -1,6 +1,7 @@
 #include "systems/sample_scenes.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 namespace snow {
 
@@ -59,7 +60,7 @@ void prefill_flakes(Simulation& sim, std::uint32_t count) {
         if (!f.acquire(slot)) {
             return;
         }
-        const RngKey k{cfg.seed, ~0ull, slot, Stream::spawn_position};
+        const RngKey k{cfg.seed, ~0ull, slot, random_stream::spawn_position};
         f.px[slot] = rng_range(k, 0, lo.x, hi.x);
         f.py[slot] = rng_range(k, 1, lo.y + 0.5f * (hi.y - lo.y), hi.y);
         f.pz[slot] = rng_range(k, 2, lo.z, hi.z);

@@ -39,7 +39,7 @@ Simulation::Simulation(const SimConfig& config) {
 Simulation::~Simulation() = default;
 
 void Simulation::build_schedule() {
-    // Order is the tick's data flow (DESIGN.md); needs make absent effects free.
+    // Order is the tick's data flow (docs/design.md "One tick"); needs make absent effects free.
     const Requirement flakes = flakes_alive;
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
@@ -125,7 +125,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
-    // Flakes meet meshes only through the sky map (seed 004): a mesh needs one.
+    // Flakes meet meshes only through the sky map [SKY]: a mesh needs one.
     if (!world_.has_resource<OcclusionCamera>()) {
         world_.set_resource<OcclusionCamera>();
     }

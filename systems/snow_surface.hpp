@@ -1,6 +1,6 @@
 /// @file snow_surface.hpp
-/// @brief A heightfield of settled snow over the top of an object (seed 002 §1,
-/// seed 003 §IV). Several may exist per object; cells count whole mass units.
+/// @brief A heightfield of settled snow over the top of an object ([WF §1],
+/// [ZCL §IV]). Several may exist per object; cells count whole mass units.
 #pragma once
 
 #include "ecs/entity.hpp"
@@ -22,7 +22,7 @@ struct SurfaceDef {
     float slope_z = 0.0f;               ///< d(base)/dz
     float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
     bool spills = true;                 ///< false for the ground: its edges keep their snow
-    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), seed 002 §3
+    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
 };
 
 /// Largest grid a surface may have (cells per side); larger is an input error.

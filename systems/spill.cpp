@@ -1,4 +1,4 @@
-// spill: seed 002 §3, "if too much snow accumulates on the edge of a height
+// spill: [WF §3], "if too much snow accumulates on the edge of a height
 // field, snow is emitted into the scene". Excess over the edge limit leaves a
 // border cell as new flakes just outside the surface; they fall through the
 // normal pipeline onto whatever lies below (a porch roof, the ground).
