@@ -9,6 +9,7 @@
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
@@ -42,6 +43,7 @@ struct CollideScratch {
     std::vector<Removal> reasons;
     std::vector<std::uint32_t> counts;
     std::vector<const SnowSurface*> surfaces;
+    std::vector<const SnowSurface*> covers; ///< this tick's cover surfaces
     std::vector<float> mesh_block_top;
     std::uint32_t blocks_x = 0;
     const OcclusionMap* blocks_map = nullptr;
@@ -56,6 +58,8 @@ struct Context {
     const float* mesh_block_top = nullptr;
     std::uint32_t blocks_x = 0;
     const SnowSurface* const* surfaces = nullptr;
+    const SnowSurface* const* covers = nullptr;
+    std::uint32_t cover_count = 0;
     Aabb bounds;
     float dt = 0.0f;
     Integrator integrator = Integrator::explicit_euler;
@@ -189,13 +193,35 @@ bool covered(const Context& c, std::uint32_t begin, std::uint32_t end, float x, 
     return false;
 }
 
+/// A flake met geometry at `at`. When that is the top of a cover's column
+/// (within the slope a cell spans), it is placed on the cover's snow top for
+/// the deposit system and true is returned.
+bool cover_catches(const Context& c, const glm::vec3& at, glm::vec3& p, glm::vec3& v) {
+    for (std::uint32_t k = 0; k < c.cover_count; ++k) {
+        const SnowSurface& s = *c.covers[k];
+        std::uint32_t ix = 0, iz = 0;
+        if (!s.cell_at(at.x, at.z, ix, iz)) {
+            continue;
+        }
+        const std::size_t i = s.index(ix, iz);
+        if (!s.is_void(i) && at.y >= s.height(s.base_level[i]) - 2.0f * s.cell) {
+            p = {at.x, s.top_y(i), at.z};
+            v = glm::vec3{0.0f};
+            return true;
+        }
+    }
+    return false;
+}
+
 /// A flake reached the top of a solid at `at`: it waits there for the
-/// deposit system when a surface of the solid covers the spot, otherwise it
-/// lands on bare geometry and leaves the books (it would rest there forever).
+/// deposit system when a surface of the solid or a cover covers the spot,
+/// otherwise it lands on bare geometry and leaves the books (it would rest
+/// there forever).
 Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t surf_end,
                     const glm::vec3& at, glm::vec3& p, glm::vec3& v, bool& moved) {
     if (!covered(c, surf_begin, surf_end, at.x, at.z)) {
-        return Outcome::bare;
+        moved = cover_catches(c, at, p, v);
+        return moved ? Outcome::keep : Outcome::bare;
     }
     p = at;
     v.y = 0.0f;
@@ -207,6 +233,7 @@ Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t su
 struct FirstContact {
     std::uint32_t item = 0; ///< as in ColliderGrid::cell_items
     BoxContact box;         ///< when the item is a box
+    float t = 0.0f;         ///< where along the path
     bool found = false;
 };
 
@@ -233,7 +260,7 @@ FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm
                 t = (item & ColliderGrid::sphere_tag) != 0 ? t : k.t;
                 if (hit && t < best) { // strict: the first listed wins a tie
                     best = t;
-                    first = FirstContact{item, k, true};
+                    first = FirstContact{item, k, t, true};
                 }
             }
         }
@@ -257,7 +284,10 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             break;
         }
         if ((f.item & ColliderGrid::sphere_tag) != 0) {
-            return Outcome::sphere; // seed 002 §4: the sphere eliminates it
+            // [WF §4]: the sphere eliminates it, unless a cover holds snow there.
+            done = cover_catches(c, p0 + (p - p0) * f.t, p, v);
+            moved = moved || done;
+            return done ? Outcome::keep : Outcome::sphere;
         }
         const GridBox& b = g.boxes[f.item];
         const BoxContact& k = f.box;
@@ -421,6 +451,12 @@ CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid&
     for (std::size_t i = 0; i < grid.holder_surfaces.size(); ++i) {
         s->surfaces[i] = w.try_get<SnowSurface>(grid.holder_surfaces[i]);
     }
+    s->covers.clear(); // capacity stays: no steady-tick allocation
+    if (const auto* covers = w.find_pool<SnowCover>()) {
+        for (const Entity e : covers->entities()) {
+            s->covers.push_back(&w.get<SnowSurface>(e));
+        }
+    }
     return *s;
 }
 
@@ -467,6 +503,8 @@ void collide_system(World& w) {
         c.blocks_x = scratch.blocks_x;
     }
     c.surfaces = scratch.surfaces.data();
+    c.covers = scratch.covers.data();
+    c.cover_count = static_cast<std::uint32_t>(scratch.covers.size());
     const auto& cfg = w.resource<SimConfig>();
     c.bounds = cfg.bounds;
     c.dt = cfg.dt;

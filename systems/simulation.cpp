@@ -41,6 +41,7 @@ Simulation::~Simulation() = default;
 void Simulation::build_schedule() {
     // Order is the tick's data flow (DESIGN.md); needs make absent effects free.
     const Requirement flakes = flakes_alive;
+    schedule_.add("cover", cover_system, {needs<SnowCover>()});
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
     schedule_.add("integrate", integrate_system, {flakes});
@@ -85,6 +86,18 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
         world_.add<SnowHolder>(owner);
     }
     bump_geometry();
+    return id;
+}
+
+Entity Simulation::add_cover(const CoverDef& def) {
+    std::string error;
+    SnowSurface surface = make_cover_surface(def, error);
+    throw_if(error);
+    const Entity id = world_.create();
+    world_.add<SnowSurface>(id, std::move(surface));
+    SnowCover cover;
+    cover.drop_limit = def.drop_limit;
+    world_.add<SnowCover>(id, std::move(cover));
     return id;
 }
 

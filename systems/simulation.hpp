@@ -14,6 +14,7 @@
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snapshot.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/spectral_snow.hpp"
 #include "systems/systems.hpp"
@@ -51,6 +52,11 @@ class Simulation {
     /// ground). Flakes reaching an owner's top are kept only where one of its
     /// surfaces covers that point.
     Entity add_surface(const SurfaceDef& def, Entity owner = null_entity);
+    /// A snow cover over a rectangle: snow lies on whatever geometry is under
+    /// it (its base follows the highest geometry of each column, rebuilt at
+    /// the start of a tick after geometry changed). Columns whose top is a
+    /// declared surface stay with that surface.
+    Entity add_cover(const CoverDef& def);
     Entity add_box(const Aabb& box);
     Entity add_sphere(const glm::vec3& center, float radius);
     /// A triangle mesh (3 vertices each). Adds a default OcclusionCamera if

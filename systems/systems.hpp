@@ -9,6 +9,7 @@
 
 namespace snow {
 
+void cover_system(World& w);        ///< snow_cover.cpp: covers follow the geometry under them
 void spawn_system(World& w);        ///< spawn.cpp: inactive flakes activate (seed 002 §4)
 void wind_system(World& w);         ///< wind_system.cpp: bounded random walk + gusts
 void integrate_system(World& w);    ///< integrate.cpp: gravity + drag to wind
