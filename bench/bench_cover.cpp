@@ -1,18 +1,21 @@
 // Snow cover (issue 13): a tick with a cover costs by the flakes that land and
-// the cells they dirty, not by the cover's size. The same 20 m yard (ground
-// mesh, houses, a snowman, a ramp) under covers of 256², 1024² and 2048²
-// cells, about 100k flakes in the air in steady snowfall.
+// the cells they dirty, not by the cover's size. One fixed 12.8 m yard
+// (ground mesh, four houses, a snowman, a ramp) with about 90k flakes in the
+// air in steady snowfall, under covers of 5 cm cells that are 256², 1024²
+// and 2048² cells large (the larger ones reach far past the yard).
 #include "systems/simulation.hpp"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
 namespace snow::bench {
 namespace {
 
-constexpr float half = 10.0f;
+constexpr float half = 6.4f;
+constexpr float cell = 0.05f;
 /// Ticks of snowfall before timing: the air fills to its steady ~100k flakes.
 constexpr std::uint64_t warmup_ticks = 600;
 /// Ticks between restores of the starting state (outside the timing).
@@ -25,34 +28,32 @@ std::unique_ptr<Simulation> make_covered_yard(std::uint32_t side, unsigned threa
     c.max_flakes = 130000;
     c.threads = threads;
     auto sim = std::make_unique<Simulation>(c);
-    sim->add_mesh_collider({{-half, 0.0f, -half},
-                            {half, 0.0f, -half},
-                            {half, 0.0f, half},
-                            {-half, 0.0f, -half},
-                            {half, 0.0f, half},
-                            {-half, 0.0f, half}});
+    const float reach = 0.5f * cell * static_cast<float>(side); // the cover's half extent
+    const float g = std::max(half, reach);
+    sim->add_mesh_collider({{-g, 0.0f, -g}, {g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, -g},
+                            {g, 0.0f, g}, {-g, 0.0f, g}});
     for (int k = 0; k < 4; ++k) {
-        const float x = -7.0f + 4.0f * static_cast<float>(k);
-        sim->add_box({{x, 0.0f, -6.0f}, {x + 2.5f, 2.0f + 0.5f * static_cast<float>(k), -3.0f}});
+        const float x = -5.5f + 2.8f * static_cast<float>(k);
+        sim->add_box({{x, 0.0f, -5.0f}, {x + 2.0f, 2.0f + 0.5f * static_cast<float>(k), -2.5f}});
     }
-    sim->add_sphere({3.0f, 0.6f, 4.0f}, 0.6f);
-    sim->add_sphere({3.0f, 1.5f, 4.0f}, 0.4f);
-    sim->add_mesh_collider({{-6.0f, 0.0f, 2.0f},
-                            {-3.0f, 1.5f, 2.0f},
-                            {-3.0f, 1.5f, 6.0f},
-                            {-6.0f, 0.0f, 2.0f},
-                            {-3.0f, 1.5f, 6.0f},
-                            {-6.0f, 0.0f, 6.0f}});
+    sim->add_sphere({2.5f, 0.6f, 3.0f}, 0.6f);
+    sim->add_sphere({2.5f, 1.5f, 3.0f}, 0.4f);
+    sim->add_mesh_collider({{-5.0f, 0.0f, 1.0f},
+                            {-2.0f, 1.5f, 1.0f},
+                            {-2.0f, 1.5f, 5.0f},
+                            {-5.0f, 0.0f, 1.0f},
+                            {-2.0f, 1.5f, 5.0f},
+                            {-5.0f, 0.0f, 5.0f}});
     Emitter e;
-    e.rate = 14000.0f;
+    e.rate = 18500.0f;
     sim->add_emitter(e);
     Wind w;
     w.base = w.current = {1.0f, 0.0f, 0.0f};
     sim->set_wind(w);
     CoverDef d;
-    d.min_x = d.min_z = -half;
-    d.max_x = d.max_z = half;
-    d.cell = 2.0f * half / static_cast<float>(side);
+    d.min_x = d.min_z = -reach;
+    d.max_x = d.max_z = reach;
+    d.cell = cell;
     sim->add_cover(d);
     sim->run(warmup_ticks);
     return sim;
