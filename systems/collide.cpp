@@ -2,6 +2,7 @@
 // §4; meshes through the sky map of seed 004). Detection runs in parallel over
 // fixed chunks of slots; removals are applied afterwards in slot order, so the
 // free stack and the state hash do not depend on the thread count.
+#include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/integrator.hpp"
@@ -13,6 +14,8 @@
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -60,6 +63,10 @@ struct Context {
     const SnowSurface* const* surfaces = nullptr;
     const SnowSurface* const* covers = nullptr;
     std::uint32_t cover_count = 0;
+    const Body* bodies = nullptr;
+    std::uint32_t body_count = 0;
+    Aabb body_box{glm::vec3{std::numeric_limits<float>::infinity()},
+                  glm::vec3{-std::numeric_limits<float>::infinity()}}; ///< where bodies swept this tick
     Aabb bounds;
     float dt = 0.0f;
     Integrator integrator = Integrator::explicit_euler;
@@ -327,6 +334,57 @@ Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3&
     return land_on_top(c, m->surf_begin, m->surf_end, glm::vec3{p.x, top, p.z}, p, v, moved);
 }
 
+/// Where relative path a→e (in a body's frame, centre at the origin) meets
+/// the body: the point on its surface the flake is put on.
+bool body_contact(const Body& b, const glm::vec3& a, const glm::vec3& e, glm::vec3& out) {
+    switch (b.shape) {
+    case BodyShape::box: {
+        BoxContact k;
+        if (!box_contact(Aabb{-b.half_extents, b.half_extents}, a, e, k)) {
+            return false;
+        }
+        out = k.at;
+        return true;
+    }
+    case BodyShape::capsule: {
+        const glm::vec3 core{0.0f, std::clamp(e.y, -b.half_height, b.half_height), 0.0f};
+        const glm::vec3 d = e - core;
+        const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        if (!(len < b.radius)) {
+            return false;
+        }
+        out = core + (len > 0.0f ? d / len : glm::vec3{1.0f, 0.0f, 0.0f}) * b.radius;
+        return true;
+    }
+    case BodyShape::sphere:
+        break;
+    }
+    float t = 0.0f;
+    if (!sphere_entry(a, e, GridSphere{glm::vec3{0.0f}, b.radius}, t)) {
+        return false;
+    }
+    const glm::vec3 q = a + (e - a) * t;
+    const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    out = (len > 0.0f ? q / len : glm::vec3{0.0f, 1.0f, 0.0f}) * b.radius;
+    return true;
+}
+
+/// Moving bodies, each tested in its own frame (its motion this tick taken
+/// out), so a body sweeping over a resting flake meets it too. A flake that
+/// enters is put on the body's surface and moves with it.
+void push_out_of_bodies(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v,
+                        bool& moved) {
+    for (std::uint32_t k = 0; k < c.body_count; ++k) {
+        const Body& b = c.bodies[k];
+        glm::vec3 out{0.0f};
+        if (body_contact(b, p0 - b.previous, p - b.position, out)) {
+            p = b.position + out;
+            v = (b.position - b.previous) / c.dt;
+            moved = true;
+        }
+    }
+}
+
 /// Every collider test for one flake that may meet something (finite position).
 Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
@@ -345,6 +403,9 @@ Outcome resolve(const Context& c, std::size_t i) {
         if (!(std::min(p.y, p0.y) > mesh_reach) || is_fast(c, v.x, v.y, v.z)) {
             out = mesh_top(c, p0, p, v, moved);
         }
+    }
+    if (out == Outcome::keep && c.body_box.contains(p)) {
+        push_out_of_bodies(c, p0, p, v, moved);
     }
     if (out == Outcome::keep && moved) { // untouched flakes leave their cache lines clean
         f.px[i] = p.x;
@@ -382,7 +443,10 @@ void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __
         const float y0 = y - vy[i] * dt;
         const bool low = !((y < y0 ? y : y0) > top);
         const bool fast = is_fast(c, vx[i], vy[i], vz[i]);
-        flags[i - b] = (mass[i] != 0) & (!inside | low | fast) ? 1 : 0;
+        const Aabb& near = c.body_box;
+        const bool body = (x >= near.min.x) & (x <= near.max.x) & (y >= near.min.y) &
+                          (y <= near.max.y) & (z >= near.min.z) & (z <= near.max.z);
+        flags[i - b] = (mass[i] != 0) & (!inside | low | fast | body) ? 1 : 0;
     }
 }
 
@@ -508,6 +572,19 @@ void collide_system(World& w) {
     const auto& cfg = w.resource<SimConfig>();
     c.bounds = cfg.bounds;
     c.dt = cfg.dt;
+    if (const auto* bodies = w.find_pool<Body>(); bodies != nullptr && bodies->size() > 0) {
+        c.bodies = bodies->components().data();
+        c.body_count = static_cast<std::uint32_t>(bodies->size());
+        // Their swept boxes, grown by what a flake moves in a tick at 20 m/s
+        // (faster flakes are flagged as fast anyway).
+        for (const Body& b : bodies->components()) {
+            const glm::vec3 r{b.shape == BodyShape::box ? b.half_extents : glm::vec3{b.reach()}};
+            const glm::vec3 lift{0.0f, b.shape == BodyShape::capsule ? b.half_height : 0.0f, 0.0f};
+            const glm::vec3 margin = r + lift + glm::vec3{20.0f * c.dt};
+            c.body_box.min = glm::min(c.body_box.min, glm::min(b.previous, b.position) - margin);
+            c.body_box.max = glm::max(c.body_box.max, glm::max(b.previous, b.position) + margin);
+        }
+    }
     c.integrator = cfg.integrator;
     c.gravity = cfg.gravity;
     if (const auto* wind = w.try_resource<Wind>()) {
