@@ -43,6 +43,7 @@ struct SurfaceKey {
     std::uint32_t entity;
     float x0, z0, cell;
     std::uint32_t nx, nz;
+    std::uint64_t base_version;
     friend bool operator==(const SurfaceKey&, const SurfaceKey&) = default;
 };
 
@@ -150,12 +151,16 @@ void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     }
     d.bin_top.assign(bins, -std::numeric_limits<float>::infinity());
     d.bounds.assign(surfaces.size(), std::numeric_limits<std::int64_t>::min());
-    // Bare tops are fixed when a surface is made; only snow changes after.
+    // Bare tops change only with base_version (part of the key); void cells catch nothing.
     d.min_bare.clear();
     for (const SnowSurface& s : surfaces) {
-        const std::int64_t lowest =
-            s.base_level.empty() ? 0 : *std::min_element(s.base_level.begin(), s.base_level.end());
-        d.min_bare.push_back(s.height(lowest));
+        std::int64_t lowest = std::numeric_limits<std::int64_t>::max();
+        for (const std::int64_t b : s.base_level) {
+            lowest = b != void_level ? std::min(lowest, b) : lowest;
+        }
+        d.min_bare.push_back(lowest == std::numeric_limits<std::int64_t>::max()
+                                 ? std::numeric_limits<float>::infinity()
+                                 : s.height(lowest));
     }
 }
 
@@ -201,13 +206,13 @@ void prepare(DepositScratch& d, World& w, const std::vector<SnowSurface>& surfac
     bool same = d.keys.size() == surfaces.size();
     for (std::size_t i = 0; same && i < surfaces.size(); ++i) {
         const SnowSurface& s = surfaces[i];
-        same = d.keys[i] == SurfaceKey{entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz};
+        same = d.keys[i] == SurfaceKey{entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz, s.base_version};
     }
     if (!same) {
         d.keys.clear();
         for (std::size_t i = 0; i < surfaces.size(); ++i) {
             const SnowSurface& s = surfaces[i];
-            d.keys.push_back({entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz});
+            d.keys.push_back({entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz, s.base_version});
         }
         rebuild_grid(d, surfaces);
     }

@@ -19,13 +19,17 @@ struct MassLedger {
     }
 };
 
-/// The invariant `spawned == airborne + settled + removed`, all in units.
+/// The invariant `spawned == airborne + settled + carried + removed`, all in
+/// units; `carried` is the snow snowballs picked up.
 struct MassReport {
     std::uint64_t spawned = 0;
     std::uint64_t airborne = 0;
     std::uint64_t settled = 0;
+    std::uint64_t carried = 0;
     std::uint64_t removed = 0;
-    [[nodiscard]] bool balanced() const { return spawned == airborne + settled + removed; }
+    [[nodiscard]] bool balanced() const {
+        return spawned == airborne + settled + carried + removed;
+    }
 };
 
 } // namespace snow
