@@ -12,7 +12,9 @@ the same bytes (--check exits 1 if a file would change). Scenes:
                         a fence, a three-sphere snowman, three coloured point
                         lights (white above the house, blue nearer the camera,
                         yellow on the right), steady wind along +x,
-                        exponential fog, an occlusion camera.
+                        exponential fog, an occlusion camera, a snow cover
+                        for the snowman and the fence, and a walker doing
+                        laps round the snowman.
   village_effects.gltf  the village plus the spectral far-field layer, gusts
                         and layered fog with a puff.
   minimal.gltf          ground and an emitter only: no wind, fog, occlusion or
@@ -265,6 +267,13 @@ def village(effects):
                     translation=[0.0, y, 0.0], scale=[r, r, r], snow={"collider": "sphere"})
              for part, y, r in (("base", 0.6, 0.6), ("body", 1.5, 0.42), ("head", 2.12, 0.28))]
     snowman = g.node("snowman", translation=[2.0, 0.0, 4.0], children=balls)
+    # A walker (an upright capsule) doing laps round the snowman: its trail
+    # is carved through the ground's snow and filled again by the snowfall.
+    lap = [[-1.0, 0.9, 2.5], [5.0, 0.9, 2.5], [5.0, 0.9, 6.5], [-1.0, 0.9, 6.5]]
+    walker = g.node("walker", g.mesh("walker", box, m_wood), translation=lap[0],
+                    scale=[0.4, 1.8, 0.4],
+                    snow={"collider": "capsule", "on_ground": True,
+                          "motion": {"waypoints": lap, "speed": 1.2, "loop": True}})
     lights = [point_light("white", (1.0, 1.0, 1.0), 1.0),
               point_light("blue", (0.35, 0.5, 1.0), 0.6),
               point_light("yellow", (1.0, 0.85, 0.35), 0.7)]
@@ -287,13 +296,16 @@ def village(effects):
         "wind": wind,
         "fog": fog,
         "occlusion": {"resolution": 256, "tilt": 0.25},
+        # Snow on everything no rectangle was declared for: the snowman, the
+        # fence, the porch posts' tops.
+        "cover": {"min": [-10.0, -10.0], "max": [10.0, 10.0], "cell": 0.1},
     }
     if effects:
         snow["spectral"] = {"size_xy": 64, "size_t": 32, "speed": 1.0, "band_low": 4.0,
                             "band_high": 16.0, "opacity": 0.5, "start_distance": 25.0}
     snow["camera"] = CAMERA
     snow["environment"] = ENVIRONMENT
-    roots = [ground, house, porch] + posts + [garage, fence, snowman] + lamps
+    roots = [ground, house, porch] + posts + [garage, fence, snowman, walker] + lamps
     return g.document("village effects" if effects else "village", roots, snow, lights)
 
 

@@ -33,12 +33,37 @@ constexpr Field<SurfaceDef> surface_fields[] = {
 };
 
 constexpr std::pair<std::string_view, ColliderKind> collider_kinds[] = {
-    {"box", ColliderKind::box}, {"sphere", ColliderKind::sphere}, {"mesh", ColliderKind::mesh}};
+    {"box", ColliderKind::box},
+    {"sphere", ColliderKind::sphere},
+    {"mesh", ColliderKind::mesh},
+    {"capsule", ColliderKind::capsule}};
+
+/// `[x, y, z]` points, at least one.
+void read_waypoints(const Json& j, const std::string& field, BodyMotion& m) {
+    if (!j.is_array() || j.empty()) {
+        scene_fail(field, "must be an array of at least one [x, y, z] point (got " +
+                              (j.is_array() ? std::string("an empty array") : json_type_name(j)) +
+                              ")");
+    }
+    m.waypoints.resize(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        read_value(j[i], field + "[" + std::to_string(i) + "]", {}, m.waypoints[i]);
+    }
+}
+
+constexpr Field<BodyMotion> motion_fields[] = {
+    {"waypoints", &read_waypoints, {}, true},
+    {"speed", &BodyMotion::speed, at_least_zero},
+    {"loop", &BodyMotion::loop},
+};
 
 constexpr Field<NodeSnow> node_snow_fields[] = {
     {"surface", &read_nested<&NodeSnow::surface, surface_fields, reject>},
     {"collider", +[](const Json& j, const std::string& field,
                      NodeSnow& n) { n.collider = read_choice(j, field, collider_kinds); }},
+    {"motion", &read_nested<&NodeSnow::motion, motion_fields, reject>},
+    {"snowball", &NodeSnow::snowball},
+    {"on_ground", &NodeSnow::on_ground},
 };
 
 // --- scenes[s].extras.snow ---------------------------------------------------
@@ -127,6 +152,28 @@ constexpr Field<SpectralSnow> spectral_fields[] = {
     {"start_distance", &SpectralSnow::start_distance},
 };
 
+/// `[x, z]` of a cover corner.
+template <float CoverDef::*X, float CoverDef::*Z>
+void read_corner(const Json& j, const std::string& field, CoverDef& c) {
+    std::vector<double> xz;
+    read_value(j, field, {}, xz);
+    if (xz.size() != 2) {
+        scene_fail(field, "must be [x, z] (got " + std::to_string(xz.size()) + " numbers)");
+    }
+    c.*X = static_cast<float>(xz[0]);
+    c.*Z = static_cast<float>(xz[1]);
+}
+
+constexpr Field<CoverDef> cover_fields[] = {
+    {"min", &read_corner<&CoverDef::min_x, &CoverDef::min_z>, {}, true},
+    {"max", &read_corner<&CoverDef::max_x, &CoverDef::max_z>, {}, true},
+    {"cell", &CoverDef::cell},
+    {"edge_limit", &CoverDef::edge_limit},
+    {"drop_limit", &CoverDef::drop_limit},
+    {"laplacian_limit", &CoverDef::laplacian_limit},
+    {"repose_deg", &CoverDef::repose_deg},
+};
+
 constexpr Field<CameraDef> camera_fields[] = {
     {"position", &CameraDef::position},
     {"target", &CameraDef::target},
@@ -151,6 +198,7 @@ constexpr Field<SceneSnow> scene_snow_fields[] = {
     {"fog", &read_nested<&SceneSnow::fog, fog_fields, reject>},
     {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_fields, reject>},
     {"spectral", &read_nested<&SceneSnow::spectral, spectral_fields, reject>},
+    {"cover", &read_nested<&SceneSnow::cover, cover_fields, reject>},
     {"camera",
      +[](const Json& j, const std::string& field, SceneSnow& s) {
          s.camera = read_struct(j, field, camera_fields, reject);

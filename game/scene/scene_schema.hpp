@@ -14,13 +14,17 @@
 
 namespace snow {
 
-enum class ColliderKind : std::uint8_t { box, sphere, mesh };
+enum class ColliderKind : std::uint8_t { box, sphere, mesh, capsule };
 
 /// A node's `extras.snow`: its role in the simulation. The surface's settings
 /// are read here; its rectangle and height come from the node's mesh later.
 struct NodeSnow {
     std::optional<SurfaceDef> surface;
     std::optional<ColliderKind> collider;
+    /// A scripted path: the node's collider becomes a moving body.
+    std::optional<BodyMotion> motion;
+    bool snowball = false;  ///< a moving sphere that picks up snow
+    bool on_ground = false; ///< the body stands on the bare ground under it
 };
 
 /// The scene's `extras.snow`: settings and the effects it declares. An absent
@@ -33,6 +37,7 @@ struct SceneSnow {
     std::optional<Fog> fog;
     std::optional<OcclusionCamera> occlusion;
     std::optional<SpectralSnow> spectral;
+    std::optional<CoverDef> cover;
     CameraDef camera;
     Environment environment;
 };

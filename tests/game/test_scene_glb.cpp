@@ -299,7 +299,7 @@ TEST(SceneGltf, PrimitivesOfEveryIndexKindAndModesSkipped) {
         R"([{"primitives": [{"attributes": {"POSITION": 0}, "indices": 2, "mode": 1}]}])",
         accessors, views, bytes);
     expect_error(load_scene_memory(lines_only, "t.gltf"),
-                 {"nodes[0].extras.snow declares a surface or collider, but the node has no "
+                 {"nodes[0].extras.snow declares a surface, collider or body, but the node has no "
                   "triangle mesh"});
 }
 
