@@ -54,6 +54,14 @@ std::vector<std::uint8_t> encode_glb(const std::vector<NamedMesh>& meshes,
     json views = json::array(), accessors = json::array(), gl_meshes = json::array();
     json nodes = json::array(), scene_nodes = json::array();
     std::vector<std::uint8_t> bin;
+    std::size_t bin_size = 0;
+    for (const NamedMesh& nm : meshes) {
+        if (nm.mesh != nullptr) {
+            bin_size += nm.mesh->positions.size() * 2 * sizeof(glm::vec3) +
+                        nm.mesh->indices.size() * sizeof(std::uint32_t);
+        }
+    }
+    bin.reserve(bin_size);
     for (const NamedMesh& nm : meshes) {
         if (nm.mesh == nullptr || nm.mesh->empty()) {
             continue;

@@ -32,6 +32,9 @@ bool joined(const SnowSurface& s, std::size_t i, std::size_t j, unsigned side) {
 void top_vertices(const SnowSurface& s, SnowMesh& m, std::vector<std::uint32_t>& corner_of,
                   std::vector<float>& base_of) {
     corner_of.assign(s.cell_count() * 4, no_vertex);
+    const std::size_t corners = static_cast<std::size_t>(s.nx + 1) * (s.nz + 1);
+    m.positions.reserve(corners);
+    base_of.reserve(corners);
     for (std::uint32_t cz = 0; cz <= s.nz; ++cz) {
         for (std::uint32_t cx = 0; cx <= s.nx; ++cx) {
             // Slots around the corner: 0 (-x-z), 1 (+x-z), 2 (-x+z), 3 (+x+z);
@@ -108,6 +111,7 @@ SnowMesh build_snow_mesh(const SnowSurface& s) {
     // The top: two triangles per cell, counter-clockwise from +y; vertex
     // normals sum the area-weighted normals of the triangles around them.
     m.normals.assign(m.positions.size(), glm::vec3(0.0f));
+    m.indices.reserve(s.cell_count() * 6);
     for (std::size_t i = 0; i < s.cell_count(); ++i) {
         if (!holds_snow(s, i)) {
             continue;
