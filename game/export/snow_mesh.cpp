@@ -74,10 +74,10 @@ void top_vertices(const SnowSurface& s, SnowMesh& m, std::vector<std::uint32_t>&
                                        top / static_cast<float>(n),
                                        s.z0 + static_cast<float>(cz) * s.cell});
                 base_of.push_back(base / static_cast<float>(n));
+                // The cell in slot q has this grid corner as its corner 3 - q.
                 for (unsigned q = k; q < 4; ++q) {
                     if (in[q] && patch[q] == patch[k]) {
-                        corner_of[cell[q] * 4 + (3 - q)] =
-                            v; // slot q sees its cell's opposite corner
+                        corner_of[cell[q] * 4 + (3 - q)] = v;
                     }
                 }
             }
