@@ -432,9 +432,12 @@ TEST_F(ExportFiles, SnowRunWritesAGlbAndADepthImagePerSurface) {
     std::uint64_t settled = 0;
     std::set<std::string> expected = {"village.glb", "depth", "depth/new"};
     ASSERT_FALSE(report["surfaces"].empty());
+    int covers = 0;
     for (const auto& s : report["surfaces"]) {
         const std::string name = s["name"];
-        EXPECT_EQ(s["kind"], "surface") << name;
+        // The village's five declared surfaces and its one cover.
+        EXPECT_TRUE(s["kind"] == "surface" || s["kind"] == "cover") << name;
+        covers += s["kind"] == "cover" ? 1 : 0;
         EXPECT_GT(s["cells"].get<std::uint64_t>(), 0u);
         EXPECT_LE(s["mean_depth_m"].get<double>(), s["max_depth_m"].get<double>());
         settled += s["settled_units"].get<std::uint64_t>();
@@ -456,6 +459,7 @@ TEST_F(ExportFiles, SnowRunWritesAGlbAndADepthImagePerSurface) {
             << name;
         stbi_image_free(px);
     }
+    EXPECT_EQ(covers, 1);
     EXPECT_EQ(settled, report["mass"]["settled"].get<std::uint64_t>())
         << "all settled snow lies on the listed surfaces";
     EXPECT_EQ(listing(), expected) << "no temporary file left";
