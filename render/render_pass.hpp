@@ -36,7 +36,7 @@ struct FrameContext {
 };
 
 /// Interface of a pass. Built-in order (Renderer::pass_names()):
-/// "sky" → "snow_surfaces" → "meshes" → "flakes"; far-field snow (seed 000) goes
+/// "sky" → "meshes" → "snow_surfaces" → "flakes"; far-field snow (seed 000) goes
 /// before "flakes" and fog puffs (seed 001) after it, via Renderer::insert_pass.
 class RenderPass {
   public:

@@ -20,8 +20,8 @@ namespace snow {
 
 /// Create, use and destroy it with `context` current. Passes, in order:
 ///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
-///   "snow_surfaces" SnowSurface heightfields + aprons (seed 002 §6)
 ///   "meshes"        MeshRenderable, lit, snow-white where exposed (seed 004)
+///   "snow_surfaces" SnowSurface tiled heightfields + skirts (seed 002 §6)
 ///   [far-field spectral snow, seed 000: insert_pass("flakes", ...)]
 ///   "flakes"        FlakePool point sprites (seed 003/004)
 ///   [fog puffs, seed 001: insert_pass("", ...) appends after "flakes"]

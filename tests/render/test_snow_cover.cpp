@@ -1,7 +1,7 @@
-// Snow on surfaces: sky exposure and incline (seed 004), heightfield meshes
-// with aprons (seed 002 §6), re-upload only when snow changed.
+// Snow on surfaces: sky exposure and incline (seed 004), heightfields with
+// skirts (seed 002 §6) that leave no crack at borders, eaves or between levels
+// of detail, re-upload of the changed tiles only.
 #include "render/renderer.hpp"
-#include "render/surface_mesh.hpp"
 #include "render_fixture.hpp"
 #include "systems/occlusion.hpp"
 
@@ -53,45 +53,60 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
               brightness(mean_color(without, roof, 2)) + 60.0f);
 }
 
-TEST(RenderSnowCover, SurfaceMeshHasHeightsNormalsAndApron) {
-    SnowSurface s = flat_surface(0.0f, 0.0f, 0.2f, 0.1f, 0.1f, 1.0f); // 2 x 1 cells
-    s.snow = {50, 150};                                               // 0.1 m and 0.3 m
-    std::vector<float> v;
-    std::vector<std::uint32_t> idx;
-    build_surface_mesh(s, v, &idx);
-    const std::size_t grid = 3 * 2, apron = 2 * (3 + 3) + 2 * (2 + 2);
-    ASSERT_EQ(v.size(), (grid + apron) * surface_vertex_floats);
-    EXPECT_EQ(idx.size(), 2u * 6u + 2u * (2u + 1u) * 6u);
-    const auto at = [&](std::size_t vertex, std::size_t k) {
-        return v[vertex * surface_vertex_floats + k];
-    };
-    // Corners: x = 0 sees cell 0 only, x = 0.1 averages both, x = 0.2 sees cell 1.
-    EXPECT_NEAR(at(0, 1), 1.1f, 1e-5f);
-    EXPECT_NEAR(at(1, 1), 1.2f, 1e-5f);
-    EXPECT_NEAR(at(2, 1), 1.3f, 1e-5f);
-    EXPECT_NEAR(at(1, 6), 0.2f, 1e-5f); // depth above the bare top
-    // Snow rises toward +x, so the normal leans toward −x.
-    EXPECT_LT(at(1, 3), -0.5f);
-    EXPECT_GT(at(1, 4), 0.5f);
-    // Every apron vertex pair: top at the snow, bottom at the bare top (y = 1).
-    for (std::size_t a = grid; a < grid + apron; a += 2) {
-        EXPECT_NEAR(at(a + 1, 1), 1.0f, 1e-5f);
-        EXPECT_GE(at(a, 1), 1.1f - 1e-5f);
-        EXPECT_EQ(at(a, 3), at(a + 1, 3)); // same outward normal
+TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
+    // A 30° roof, rising 0.58 m per metre toward +x, and the tilted sky
+    // camera's map of it as in the village (7.8 cm texels, rays leaning 0.255
+    // m per metre against the slope, heights where the ray through each texel
+    // centre meets the roof). The texel centres a fragment is filtered over
+    // lie up to one texel up the slope, which there rises 5.3 cm: more than
+    // the flat tolerance, so without a slope-scaled one every texel row shades
+    // as partly occluded and the roof shows stripes.
+    World world;
+    constexpr float slope = 0.58f;
+    MeshRenderable roof;
+    roof.name = "roof";
+    roof.positions = {{0.0f, 2.0f, -1.5f}, {3.0f, 2.0f + 3.0f * slope, -1.5f},
+                      {3.0f, 2.0f + 3.0f * slope, 1.5f}, {0.0f, 2.0f, 1.5f}};
+    roof.normals.assign(4, glm::normalize(glm::vec3(-slope, 1.0f, 0.0f)));
+    roof.indices = {0, 2, 1, 0, 3, 2};
+    roof.color = {0.35f, 0.12f, 0.10f};
+    world.add<MeshRenderable>(world.create(), std::move(roof));
+    world.set_resource<Environment>();
+    OcclusionMap& map = world.set_resource<OcclusionMap>();
+    map.x0 = -1.0f;
+    map.z0 = -3.0f;
+    map.texel = 0.078f;
+    map.width = 64;
+    map.height = 80;
+    map.shear_x = -0.255f;
+    map.top_y.resize(static_cast<std::size_t>(map.width) * map.height);
+    for (std::uint32_t j = 0; j < map.height; ++j) {
+        for (std::uint32_t i = 0; i < map.width; ++i) {
+            // The ray x = u − shear·y meets y = 2 + slope·x at this height.
+            const float u = map.x0 + (static_cast<float>(i) + 0.5f) * map.texel;
+            const float z = map.z0 + (static_cast<float>(j) + 0.5f) * map.texel;
+            const float y = (2.0f + slope * u) / (1.0f + slope * map.shear_x);
+            const float x = u - map.shear_x * y;
+            const bool on_roof = x >= 0.0f && x <= 3.0f && std::abs(z) <= 1.5f;
+            map.top_y[j * map.width + i] = on_roof ? y : 0.0f;
+        }
     }
-    for (const std::uint32_t i : idx) {
-        EXPECT_LT(i, grid + apron);
+    map.version = 1;
+    ViewCamera camera;
+    camera.position = {-1.0f, 4.6f, 1.8f};
+    camera.look_at({1.5f, 2.9f, 0.0f});
+    const Image image = render_image(world, camera);
+    // A plane under the sun and the sky is lit evenly: every point down the
+    // slope must come out the same.
+    float lo = 255.0f, hi = 0.0f;
+    for (int k = 0; k <= 400; ++k) {
+        const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
+        const float b = brightness(mean_color(image, to_pixel(camera, {x, 2.0f + slope * x, 0.3f}), 0));
+        lo = std::min(lo, b);
+        hi = std::max(hi, b);
     }
-}
-
-TEST(RenderSnowCover, MalformedSurfaceBuildsNothing) {
-    SnowSurface s = flat_surface(0.0f, 0.0f, 1.0f, 1.0f, 0.1f, 0.0f);
-    s.snow.pop_back();
-    std::vector<float> v{1.0f};
-    std::vector<std::uint32_t> idx{1u};
-    build_surface_mesh(s, v, &idx);
-    EXPECT_TRUE(v.empty());
-    EXPECT_TRUE(idx.empty());
+    EXPECT_GT(lo, 170.0f) << "the exposed roof is snow-white";
+    EXPECT_LT(hi - lo, 3.0f) << "brightness varies down the slope: stripes";
 }
 
 TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
@@ -113,8 +128,16 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     }
     renderer.render(scene.world, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
+    EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u) << "the 30 x 30 roof is one tile";
     const Image after = renderer.read_pixels();
     EXPECT_GT(compare_images(before, after).pixels_over, 100u) << "the taller roof snow shows";
+
+    // One ground cell changes: only its tile of the 48 x 48 ground goes up again.
+    SnowSurface& ground = scene.world.get<SnowSurface>(scene.ground_surface);
+    ground.snow[ground.index(40, 3)] += 1;
+    renderer.render(scene.world, scene.camera);
+    EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
+    EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u);
 
     scene.world.destroy(scene.house_roof);
     renderer.render(scene.world, scene.camera);

@@ -247,7 +247,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     auto context = headless_context();
     Renderer renderer(*context);
     renderer.render(scene.world, scene.camera);
-    const std::vector<std::string> builtin = {"sky", "snow_surfaces", "meshes", "flakes"};
+    const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
     EXPECT_EQ(renderer.pass_names(), builtin);
     for (const std::string& v : renderer.compiled_variants()) {
         EXPECT_EQ(v.find("spectral"), std::string::npos) << v;
@@ -259,7 +259,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     fog.puffs.push_back(FogPuff{{0.0f, 1.0f, 0.0f}, 1.0f, 0.5f, {}, 0.0f});
     scene.world.set_resource<Fog>(fog);
     renderer.render(scene.world, scene.camera);
-    const std::vector<std::string> effects = {"sky",           "snow_surfaces", "meshes",
+    const std::vector<std::string> effects = {"sky",           "meshes", "snow_surfaces",
                                               "spectral_snow", "flakes",        "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
     for (const PassTiming& p : renderer.timings().passes) {
