@@ -25,6 +25,28 @@ vec2 cell(ivec2 c) {
     return texelFetch(surface_cells, c, 0).rg;
 }
 
+// Snow top and bare top (r, g) of the sample in cell c. A border sample sits
+// on the grid's border, half a cell out from its cell's centre: its heights
+// continue the slope from the next cell inward (unless an edge lies between),
+// so a sloped surface keeps its slope and normals right up to the border.
+vec2 sample_at(ivec2 c) {
+    vec2 h = cell(c);
+    ivec2 last = surface_grid.xy - 1;
+    ivec2 inward = ivec2(c.x == 0 ? 1 : (c.x == last.x ? -1 : 0),
+                         c.y == 0 ? 1 : (c.y == last.y ? -1 : 0));
+    inward *= ivec2(greaterThan(last, ivec2(0))); // a grid one cell wide has no inward cell
+    vec2 out_h = h;
+    if (inward.x != 0) {
+        vec2 n = cell(c + ivec2(inward.x, 0));
+        out_h += abs(n.g - h.g) <= edge_slope * surface_place.z ? 0.5 * (h - n) : vec2(0.0);
+    }
+    if (inward.y != 0) {
+        vec2 n = cell(c + ivec2(0, inward.y));
+        out_h += abs(n.g - h.g) <= edge_slope * surface_place.z ? 0.5 * (h - n) : vec2(0.0);
+    }
+    return out_h;
+}
+
 // Position, in cells from the grid origin, of the sample in cell u of an axis
 // of n cells: the cell's centre, the outermost pulled out to the border.
 float place(int u, int n) {
@@ -57,14 +79,14 @@ void main() {
     int id = gl_VertexID - copy * side * side;
     ivec2 last = surface_grid.xy - 1;
     ivec2 c = min(a_tile + ivec2(id % side, id / side) * step, last);
-    vec2 h = cell(c);
+    vec2 h = sample_at(c);
     vec2 p = vec2(place(c.x, surface_grid.x), place(c.y, surface_grid.y));
     int xl = max(c.x - step, 0), xh = min(c.x + step, last.x);
     int zl = max(c.y - step, 0), zh = min(c.y + step, last.y);
-    vec3 gx = gradient(h, p.x, cell(ivec2(xl, c.y)), place(xl, surface_grid.x),
-                       cell(ivec2(xh, c.y)), place(xh, surface_grid.x));
-    vec3 gz = gradient(h, p.y, cell(ivec2(c.x, zl)), place(zl, surface_grid.y),
-                       cell(ivec2(c.x, zh)), place(zh, surface_grid.y));
+    vec3 gx = gradient(h, p.x, sample_at(ivec2(xl, c.y)), place(xl, surface_grid.x),
+                       sample_at(ivec2(xh, c.y)), place(xh, surface_grid.x));
+    vec3 gz = gradient(h, p.y, sample_at(ivec2(c.x, zl)), place(zl, surface_grid.y),
+                       sample_at(ivec2(c.x, zh)), place(zh, surface_grid.y));
     vec3 n = normalize(vec3(-gx.x, 1.0, -gz.x));
     float y = h.r;
     vec3 normal = n;

@@ -5,6 +5,10 @@
 #include "render_fixture.hpp"
 #include "systems/occlusion.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 #include <gtest/gtest.h>
 
 namespace snow::test {
@@ -106,6 +110,169 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
         hi = std::max(hi, b);
     }
     EXPECT_GT(lo, 170.0f) << "the exposed roof is snow-white";
+    EXPECT_LT(hi - lo, 3.0f) << "brightness varies down the slope: stripes";
+}
+
+/// True when the pixel is (close to) the clear colour: nothing was drawn there.
+bool background(const Image& image, glm::ivec2 px, const glm::vec3& sky) {
+    const glm::vec3 c = mean_color(image, px, 0);
+    return std::max({std::abs(c.x - sky.x), std::abs(c.y - sky.y), std::abs(c.z - sky.z)}) < 3.0f;
+}
+
+/// Snow over a bare top with an edge: a 2 m high roof (x < 2) next to the
+/// ground (x ≥ 2), 5 cm of snow everywhere; no meshes, so every pixel not
+/// drawn by the snow shows the sky.
+struct EavesScene {
+    World world;
+    glm::vec3 sky{0.0f};
+    EavesScene() {
+        SnowSurface s = flat_surface(0.0f, 0.0f, 4.0f, 2.0f, 0.05f, 0.0f);
+        for (std::uint32_t z = 0; z < s.nz; ++z) {
+            for (std::uint32_t x = 0; x < s.nx; ++x) {
+                const std::size_t i = s.index(x, z);
+                s.base_level[i] = x < 40 ? std::llround(2.0f / s.unit_height) : 0;
+                s.snow[i] = 25; // 5 cm
+            }
+        }
+        world.add<SnowSurface>(world.create(), std::move(s));
+        Environment& env = world.set_resource<Environment>();
+        sky = env.sky * 255.0f;
+    }
+    [[nodiscard]] Image render(const glm::vec3& eye, const glm::vec3& target) const {
+        ViewCamera camera;
+        camera.position = eye;
+        camera.look_at(target);
+        return render_image(world, camera);
+    }
+};
+
+TEST(RenderSnowCover, EavesHangNoCurtainDownToTheGround) {
+    const EavesScene scene;
+    const glm::vec3 eye{2.0f, 1.2f, 6.0f}, target{2.0f, 1.0f, 1.0f};
+    const Image image = scene.render(eye, target);
+    ViewCamera camera;
+    camera.position = eye;
+    camera.look_at(target);
+    // Between the roof's snow (2.0–2.05 m) and the ground's (0–0.05 m) at the
+    // edge there is nothing: a heightfield joining them would hang a sheet of
+    // snow from the eaves to the ground. (The sight lines to these points pass
+    // over the ground snow behind and under the roof snow.)
+    int curtain = 0;
+    for (const float x : {1.97f, 2.0f, 2.03f}) {
+        for (float y = 0.6f; y < 1.75f; y += 0.1f) {
+            curtain += background(image, to_pixel(camera, {x, y, 2.0f}), scene.sky) ? 0 : 1;
+        }
+    }
+    EXPECT_EQ(curtain, 0) << "snow drawn between the eaves and the ground";
+    // Both snow layers themselves are drawn.
+    EXPECT_FALSE(background(image, to_pixel(camera, {1.0f, 2.04f, 2.0f}), scene.sky));
+    EXPECT_FALSE(background(image, to_pixel(camera, {3.0f, 0.04f, 2.0f}), scene.sky));
+}
+
+TEST(RenderSnowCover, SnowEndsInASideDownToTheBareTopAtBordersAndEaves) {
+    const EavesScene scene;
+    // From the front, a little above: the roof snow's front side (z = 2, from
+    // 2.05 m down to its bare top at 2 m) hides the sky behind it.
+    {
+        const glm::vec3 eye{1.0f, 2.4f, 4.0f}, target{1.0f, 2.0f, 1.0f};
+        const Image image = scene.render(eye, target);
+        ViewCamera camera;
+        camera.position = eye;
+        camera.look_at(target);
+        for (const float x : {0.5f, 1.0f, 1.5f}) {
+            EXPECT_FALSE(background(image, to_pixel(camera, {x, 2.02f, 2.0f}), scene.sky))
+                << "a crack under the snow's edge at the border, x = " << x;
+        }
+    }
+    // From beside the eaves: the roof snow ends in a side facing the drop.
+    {
+        const glm::vec3 eye{3.5f, 2.3f, 1.0f}, target{2.0f, 2.02f, 1.0f};
+        const Image image = scene.render(eye, target);
+        ViewCamera camera;
+        camera.position = eye;
+        camera.look_at(target);
+        for (const float z : {0.6f, 1.0f, 1.4f}) {
+            EXPECT_FALSE(background(image, to_pixel(camera, {1.975f, 2.02f, z}), scene.sky))
+                << "a crack under the snow's edge at the eaves, z = " << z;
+        }
+    }
+}
+
+TEST(RenderSnowCover, LevelsOfDetailMeetWithoutCracks) {
+    // Bumpy ground 40 m across under 10 cm of snow, seen low from the side:
+    // near tiles at full detail, far ones coarse. Where levels meet, a crack
+    // would show the black sky through the snow.
+    World world;
+    SnowSurface s = flat_surface(-20.0f, -20.0f, 40.0f, 40.0f, 0.1f, 0.0f);
+    for (std::uint32_t z = 0; z < s.nz; ++z) {
+        for (std::uint32_t x = 0; x < s.nx; ++x) {
+            const double wx = s.x0 + (x + 0.5) * s.cell, wz = s.z0 + (z + 0.5) * s.cell;
+            // Bumps 2 m apart, as steep as 1.5 m per m: coarse levels cut
+            // corners by many centimetres.
+            const double base = 1.0 + 0.5 * std::sin(3.0 * wx) * std::cos(3.0 * wz);
+            s.base_level[s.index(x, z)] = std::llround(base / s.unit_height);
+            s.snow[s.index(x, z)] = 50;
+        }
+    }
+    world.add<SnowSurface>(world.create(), std::move(s));
+    world.set_resource<Environment>().sky = glm::vec3(0.0f);
+    ViewCamera camera;
+    camera.position = {0.0f, 3.5f, 22.0f};
+    camera.look_at({0.0f, 0.5f, 0.0f});
+    auto context = headless_context();
+    Renderer renderer(*context);
+    renderer.render(world, camera);
+    const Image image = renderer.read_pixels();
+    EXPECT_GT(renderer.timings().surface_tiles_drawn, 60u);
+    // In each column, below the first snow pixel from the top (the hills'
+    // outline against the sky), every pixel down to the image's bottom is snow.
+    std::size_t cracks = 0, snow = 0;
+    for (int x = 0; x < image.width; ++x) {
+        bool below_outline = false;
+        for (int y = 0; y < image.height; ++y) {
+            const bool sky = image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] == 0;
+            below_outline = below_outline || !sky;
+            cracks += below_outline && sky ? 1 : 0;
+            snow += sky ? 0 : 1;
+        }
+    }
+    EXPECT_GT(snow, image.rgba.size() / 4 / 2) << "the hills fill most of the view";
+    EXPECT_EQ(cracks, 0u);
+}
+
+TEST(RenderSnowCover, SnowOnASlopedRoofIsEvenWithoutStripes) {
+    // A 30° roof surface as in the village (0.1 m cells, bare top quantised to
+    // whole snow units per cell) under an even 3 cm of snow: the heightfield
+    // and its normals must be as even as the plane.
+    World world;
+    SurfaceDef def;
+    def.x0 = 0.0f;
+    def.z0 = -1.5f;
+    def.size_x = 3.0f;
+    def.size_z = 3.0f;
+    def.cell = 0.1f;
+    def.base_y = 2.0f;
+    def.slope_x = 0.58f;
+    std::string error;
+    SnowSurface roof = make_surface(def, error);
+    ASSERT_TRUE(error.empty()) << error;
+    const auto units = static_cast<std::uint32_t>(std::lround(0.03 / roof.unit_height));
+    std::fill(roof.snow.begin(), roof.snow.end(), units);
+    world.add<SnowSurface>(world.create(), std::move(roof));
+    world.set_resource<Environment>();
+    ViewCamera camera;
+    camera.position = {-1.0f, 4.6f, 1.8f};
+    camera.look_at({1.5f, 2.9f, 0.0f});
+    const Image image = render_image(world, camera);
+    float lo = 255.0f, hi = 0.0f;
+    for (int k = 0; k <= 400; ++k) {
+        const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
+        const glm::vec3 p{x, 2.03f + 0.58f * x, 0.3f};
+        const float b = brightness(mean_color(image, to_pixel(camera, p), 0));
+        lo = std::min(lo, b);
+        hi = std::max(hi, b);
+    }
+    EXPECT_GT(lo, 150.0f) << "the roof is covered";
     EXPECT_LT(hi - lo, 3.0f) << "brightness varies down the slope: stripes";
 }
 
