@@ -29,7 +29,8 @@ void SurfacePass::upload(GpuSurface& gpu, const SnowSurface& s, FrameContext& fr
         const bool fits = std::max(s.nx, s.nz) <= static_cast<std::uint32_t>(max_size);
         gpu.drawable = gpu.tiles.tiles_x() > 0 && fits;
         if (!fits && !too_large_reported_) { // said once, like the renderer's other notes
-            std::fprintf(stderr, "snow: a %u x %u snow surface exceeds GL_MAX_TEXTURE_SIZE %d; not drawn\n",
+            std::fprintf(stderr,
+                         "snow: a %u x %u snow surface exceeds GL_MAX_TEXTURE_SIZE %d; not drawn\n",
                          s.nx, s.nz, max_size);
             too_large_reported_ = true;
         }
@@ -73,9 +74,9 @@ const SurfacePass::Patch& SurfacePass::patch(std::uint32_t level, std::uint32_t 
 
 const SurfacePass::EdgePatch& SurfacePass::edge_patch(GpuSurface& gpu, const SnowSurface& s,
                                                       const TileDraw& d) {
-    const auto tile = static_cast<std::uint32_t>(d.first.y) / surface_tile_cells *
-                          gpu.tiles.tiles_x() +
-                      static_cast<std::uint32_t>(d.first.x) / surface_tile_cells;
+    const auto tile =
+        static_cast<std::uint32_t>(d.first.y) / surface_tile_cells * gpu.tiles.tiles_x() +
+        static_cast<std::uint32_t>(d.first.x) / surface_tile_cells;
     EdgePatch& p = gpu.edge_patches[tile];
     const std::uint32_t version = gpu.tiles.version(tile);
     if (!p.built || p.level != d.level || p.skirts != d.skirts || p.version != version) {
@@ -131,7 +132,8 @@ void SurfacePass::draw(GpuSurface& gpu, const SnowSurface& s, FrameContext& fram
             ++end;
         }
         glUniform4i(program.uniform("surface_grid"), static_cast<GLint>(s.nx),
-                    static_cast<GLint>(s.nz), 1 << d.level, static_cast<GLint>(patch_side(d.level)));
+                    static_cast<GLint>(s.nz), 1 << d.level,
+                    static_cast<GLint>(patch_side(d.level)));
         GLuint indices = 0;
         GLsizei count = 0;
         if (d.edges) {

@@ -25,11 +25,11 @@ bool well_formed(const SnowSurface& s) {
 
 std::uint64_t grid_fingerprint(const SnowSurface& s) {
     std::uint64_t h = 1469598103934665603ull; // FNV-1a over the grid description
-    for (const std::uint64_t v :
-         {std::uint64_t{s.nx}, std::uint64_t{s.nz}, std::uint64_t{std::bit_cast<std::uint32_t>(s.x0)},
-          std::uint64_t{std::bit_cast<std::uint32_t>(s.z0)},
-          std::uint64_t{std::bit_cast<std::uint32_t>(s.cell)},
-          std::uint64_t{std::bit_cast<std::uint32_t>(s.unit_height)}}) {
+    for (const std::uint64_t v : {std::uint64_t{s.nx}, std::uint64_t{s.nz},
+                                  std::uint64_t{std::bit_cast<std::uint32_t>(s.x0)},
+                                  std::uint64_t{std::bit_cast<std::uint32_t>(s.z0)},
+                                  std::uint64_t{std::bit_cast<std::uint32_t>(s.cell)},
+                                  std::uint64_t{std::bit_cast<std::uint32_t>(s.unit_height)}}) {
         h = (h ^ v) * 1099511628211ull;
     }
     return h;
@@ -163,10 +163,10 @@ void append_patch(std::uint32_t level, std::uint32_t skirts, KeepQuad keep_quad,
     // each skirt quad faces outward.
     const auto ring = [n](std::uint32_t k) {
         const std::uint32_t e = k / (n - 1), j = k % (n - 1);
-        return e == 0   ? j * n                     // −x edge, z rising
-               : e == 1 ? (n - 1) * n + j           // +z edge, x rising
-               : e == 2 ? (n - 1 - j) * n + n - 1   // +x edge, z falling
-                        : n - 1 - j;                // −z edge, x falling
+        return e == 0   ? j * n                   // −x edge, z rising
+               : e == 1 ? (n - 1) * n + j         // +z edge, x rising
+               : e == 2 ? (n - 1 - j) * n + n - 1 // +x edge, z falling
+                        : n - 1 - j;              // −z edge, x falling
     };
     constexpr std::uint32_t ring_edges[4] = {skirt_low_x, skirt_high_z, skirt_high_x, skirt_low_z};
     const std::uint32_t perimeter = 4 * (n - 1);
@@ -210,7 +210,8 @@ void edge_patch_indices(const SnowSurface& s, const TileDraw& d, std::vector<std
     // True when the bare top jumps like an edge between grid samples a and b.
     const auto jumps = [&](std::uint32_t ax, std::uint32_t az, std::uint32_t bx, std::uint32_t bz) {
         const double run = std::abs(px[bx] - px[ax]) + std::abs(pz[bz] - pz[az]);
-        const auto rise = static_cast<double>(s.base_level[cell(ax, az)] - s.base_level[cell(bx, bz)]);
+        const auto rise =
+            static_cast<double>(s.base_level[cell(ax, az)] - s.base_level[cell(bx, bz)]);
         return std::abs(rise) > limit * run;
     };
     const auto bare = [&](std::uint32_t x, std::uint32_t z) {
@@ -227,8 +228,7 @@ void edge_patch_indices(const SnowSurface& s, const TileDraw& d, std::vector<std
     append_patch(
         d.level, d.skirts,
         [&](std::uint32_t x, std::uint32_t z) { return !bare(x, z) && !bridges(x, z); },
-        [&](std::uint32_t a, std::uint32_t b) { return !jumps(a % n, a / n, b % n, b / n); },
-        out);
+        [&](std::uint32_t a, std::uint32_t b) { return !jumps(a % n, a / n, b % n, b / n); }, out);
     // A quad left out at an edge: each of its sides that does not jump is
     // where the snow on that side ends; hang it to the bare top there.
     for (std::uint32_t z = 0; z + 1 < n; ++z) {
@@ -301,7 +301,7 @@ const std::vector<std::uint32_t>& SurfaceTiles::rescan(const SnowSurface& s) {
 }
 
 std::uint64_t SurfaceTiles::select(const SnowSurface& s, const TileView& view,
-                                  std::vector<TileDraw>& out) {
+                                   std::vector<TileDraw>& out) {
     out.clear();
     distance_.assign(range_.size(), -1.0f); // < 0: not drawn
     for (std::uint32_t t = 0; t < range_.size(); ++t) {
@@ -326,7 +326,8 @@ std::uint64_t SurfaceTiles::select(const SnowSurface& s, const TileView& view,
         samples = 0;
         for (std::uint32_t t = 0; t < range_.size(); ++t) {
             if (distance_[t] >= 0.0f) {
-                const std::uint32_t level = patch_level(distance_[t], s.cell, view.px_per_metre, spacing);
+                const std::uint32_t level =
+                    patch_level(distance_[t], s.cell, view.px_per_metre, spacing);
                 level_[t] = static_cast<std::int32_t>(level);
                 samples += static_cast<std::uint64_t>(patch_side(level)) * patch_side(level);
             }
@@ -346,7 +347,8 @@ std::uint64_t SurfaceTiles::select(const SnowSurface& s, const TileView& view,
             return border || (level_[across] >= 0 && level_[across] != level_[t]);
         };
         TileDraw d;
-        d.first = {static_cast<int>(tx * surface_tile_cells), static_cast<int>(tz * surface_tile_cells)};
+        d.first = {static_cast<int>(tx * surface_tile_cells),
+                   static_cast<int>(tz * surface_tile_cells)};
         d.level = static_cast<std::uint32_t>(level_[t]);
         d.skirts = (needs(tx == 0, t - 1) ? skirt_low_x : 0u) |
                    (needs(tx + 1 == tiles_x_, t + 1) ? skirt_high_x : 0u) |

@@ -56,8 +56,8 @@ inline constexpr std::uint32_t patch_copies = 3;
 struct TileView {
     glm::mat4 view_proj{1.0f};
     glm::vec3 eye{0.0f};
-    float px_per_metre = 1.0f; ///< viewport height / (2 tan(fov/2))
-    float spacing_px = 4.0f;   ///< RenderSettings::surface_spacing_px
+    float px_per_metre = 1.0f;               ///< viewport height / (2 tan(fov/2))
+    float spacing_px = 4.0f;                 ///< RenderSettings::surface_spacing_px
     std::uint32_t max_samples = 0xFFFFFFFFu; ///< RenderSettings::surface_samples
 };
 

@@ -52,7 +52,7 @@ TEST(RenderGolden, VillageEffectsScene) {
     // over the sky beyond them, the layered fog low over the ground and a puff.
     const Frame f = render_scene("village_effects.gltf", 240);
     const std::vector<std::string> passes = {"sky",           "meshes", "snow_surfaces",
-                                             "spectral_snow", "flakes",        "fog_puffs"};
+                                             "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(f.passes, passes);
     EXPECT_TRUE(matches_golden(f.image, "village_effects"));
 }

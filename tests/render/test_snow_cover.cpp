@@ -57,6 +57,24 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
               brightness(mean_color(without, roof, 2)) + 60.0f);
 }
 
+/// The 30° test roofs below, seen from one camera: (darkest, brightest) pixel
+/// along a line down the slope at height y0 + 0.58·x, x from 0.2 to 2.8 m.
+/// A plane under the sun and the sky is lit evenly, so the two must agree.
+glm::vec2 brightness_down_the_slope(const World& world, float y0) {
+    ViewCamera camera;
+    camera.position = {-1.0f, 4.6f, 1.8f};
+    camera.look_at({1.5f, 2.9f, 0.0f});
+    const Image image = render_image(world, camera);
+    glm::vec2 range(255.0f, 0.0f);
+    for (int k = 0; k <= 400; ++k) {
+        const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
+        const float b =
+            brightness(mean_color(image, to_pixel(camera, {x, y0 + 0.58f * x, 0.3f}), 0));
+        range = {std::min(range.x, b), std::max(range.y, b)};
+    }
+    return range;
+}
+
 TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
     // A 30° roof, rising 0.58 m per metre toward +x, and the tilted sky
     // camera's map of it as in the village (7.8 cm texels, rays leaning 0.255
@@ -66,11 +84,13 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
     // the flat tolerance, so without a slope-scaled one every texel row shades
     // as partly occluded and the roof shows stripes.
     World world;
-    constexpr float slope = 0.58f;
+    constexpr float slope = 0.58f; // as brightness_down_the_slope looks along
     MeshRenderable roof;
     roof.name = "roof";
-    roof.positions = {{0.0f, 2.0f, -1.5f}, {3.0f, 2.0f + 3.0f * slope, -1.5f},
-                      {3.0f, 2.0f + 3.0f * slope, 1.5f}, {0.0f, 2.0f, 1.5f}};
+    roof.positions = {{0.0f, 2.0f, -1.5f},
+                      {3.0f, 2.0f + 3.0f * slope, -1.5f},
+                      {3.0f, 2.0f + 3.0f * slope, 1.5f},
+                      {0.0f, 2.0f, 1.5f}};
     roof.normals.assign(4, glm::normalize(glm::vec3(-slope, 1.0f, 0.0f)));
     roof.indices = {0, 2, 1, 0, 3, 2};
     roof.color = {0.35f, 0.12f, 0.10f};
@@ -96,21 +116,9 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
         }
     }
     map.version = 1;
-    ViewCamera camera;
-    camera.position = {-1.0f, 4.6f, 1.8f};
-    camera.look_at({1.5f, 2.9f, 0.0f});
-    const Image image = render_image(world, camera);
-    // A plane under the sun and the sky is lit evenly: every point down the
-    // slope must come out the same.
-    float lo = 255.0f, hi = 0.0f;
-    for (int k = 0; k <= 400; ++k) {
-        const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
-        const float b = brightness(mean_color(image, to_pixel(camera, {x, 2.0f + slope * x, 0.3f}), 0));
-        lo = std::min(lo, b);
-        hi = std::max(hi, b);
-    }
-    EXPECT_GT(lo, 170.0f) << "the exposed roof is snow-white";
-    EXPECT_LT(hi - lo, 3.0f) << "brightness varies down the slope: stripes";
+    const glm::vec2 range = brightness_down_the_slope(world, 2.0f);
+    EXPECT_GT(range.x, 170.0f) << "the exposed roof is snow-white";
+    EXPECT_LT(range.y - range.x, 3.0f) << "brightness varies down the slope: stripes";
 }
 
 /// True when the pixel is (close to) the clear colour: nothing was drawn there.
@@ -138,21 +146,23 @@ struct EavesScene {
         Environment& env = world.set_resource<Environment>();
         sky = env.sky * 255.0f;
     }
-    [[nodiscard]] Image render(const glm::vec3& eye, const glm::vec3& target) const {
-        ViewCamera camera;
+    /// Renders the view from `eye` toward `target`.
+    void look(const glm::vec3& eye, const glm::vec3& target) {
         camera.position = eye;
         camera.look_at(target);
-        return render_image(world, camera);
+        image = render_image(world, camera);
     }
+    /// True when snow was drawn where p lies in the last view.
+    [[nodiscard]] bool snow_at(const glm::vec3& p) const {
+        return !background(image, to_pixel(camera, p), sky);
+    }
+    ViewCamera camera;
+    Image image;
 };
 
 TEST(RenderSnowCover, EavesHangNoCurtainDownToTheGround) {
-    const EavesScene scene;
-    const glm::vec3 eye{2.0f, 1.2f, 6.0f}, target{2.0f, 1.0f, 1.0f};
-    const Image image = scene.render(eye, target);
-    ViewCamera camera;
-    camera.position = eye;
-    camera.look_at(target);
+    EavesScene scene;
+    scene.look({2.0f, 1.2f, 6.0f}, {2.0f, 1.0f, 1.0f});
     // Between the roof's snow (2.0–2.05 m) and the ground's (0–0.05 m) at the
     // edge there is nothing: a heightfield joining them would hang a sheet of
     // snow from the eaves to the ground. (The sight lines to these points pass
@@ -160,41 +170,29 @@ TEST(RenderSnowCover, EavesHangNoCurtainDownToTheGround) {
     int curtain = 0;
     for (const float x : {1.97f, 2.0f, 2.03f}) {
         for (float y = 0.6f; y < 1.75f; y += 0.1f) {
-            curtain += background(image, to_pixel(camera, {x, y, 2.0f}), scene.sky) ? 0 : 1;
+            curtain += scene.snow_at({x, y, 2.0f}) ? 1 : 0;
         }
     }
     EXPECT_EQ(curtain, 0) << "snow drawn between the eaves and the ground";
     // Both snow layers themselves are drawn.
-    EXPECT_FALSE(background(image, to_pixel(camera, {1.0f, 2.04f, 2.0f}), scene.sky));
-    EXPECT_FALSE(background(image, to_pixel(camera, {3.0f, 0.04f, 2.0f}), scene.sky));
+    EXPECT_TRUE(scene.snow_at({1.0f, 2.04f, 2.0f}));
+    EXPECT_TRUE(scene.snow_at({3.0f, 0.04f, 2.0f}));
 }
 
 TEST(RenderSnowCover, SnowEndsInASideDownToTheBareTopAtBordersAndEaves) {
-    const EavesScene scene;
+    EavesScene scene;
     // From the front, a little above: the roof snow's front side (z = 2, from
     // 2.05 m down to its bare top at 2 m) hides the sky behind it.
-    {
-        const glm::vec3 eye{1.0f, 2.4f, 4.0f}, target{1.0f, 2.0f, 1.0f};
-        const Image image = scene.render(eye, target);
-        ViewCamera camera;
-        camera.position = eye;
-        camera.look_at(target);
-        for (const float x : {0.5f, 1.0f, 1.5f}) {
-            EXPECT_FALSE(background(image, to_pixel(camera, {x, 2.02f, 2.0f}), scene.sky))
-                << "a crack under the snow's edge at the border, x = " << x;
-        }
+    scene.look({1.0f, 2.4f, 4.0f}, {1.0f, 2.0f, 1.0f});
+    for (const float x : {0.5f, 1.0f, 1.5f}) {
+        EXPECT_TRUE(scene.snow_at({x, 2.02f, 2.0f}))
+            << "a crack under the snow's edge at the border, x = " << x;
     }
     // From beside the eaves: the roof snow ends in a side facing the drop.
-    {
-        const glm::vec3 eye{3.5f, 2.3f, 1.0f}, target{2.0f, 2.02f, 1.0f};
-        const Image image = scene.render(eye, target);
-        ViewCamera camera;
-        camera.position = eye;
-        camera.look_at(target);
-        for (const float z : {0.6f, 1.0f, 1.4f}) {
-            EXPECT_FALSE(background(image, to_pixel(camera, {1.975f, 2.02f, z}), scene.sky))
-                << "a crack under the snow's edge at the eaves, z = " << z;
-        }
+    scene.look({3.5f, 2.3f, 1.0f}, {2.0f, 2.02f, 1.0f});
+    for (const float z : {0.6f, 1.0f, 1.4f}) {
+        EXPECT_TRUE(scene.snow_at({1.975f, 2.02f, z}))
+            << "a crack under the snow's edge at the eaves, z = " << z;
     }
 }
 
@@ -230,7 +228,8 @@ TEST(RenderSnowCover, LevelsOfDetailMeetWithoutCracks) {
     for (int x = 0; x < image.width; ++x) {
         bool below_outline = false;
         for (int y = 0; y < image.height; ++y) {
-            const bool sky = image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] == 0;
+            const bool sky =
+                image.pixel(x, y)[0] + image.pixel(x, y)[1] + image.pixel(x, y)[2] == 0;
             below_outline = below_outline || !sky;
             cracks += below_outline && sky ? 1 : 0;
             snow += sky ? 0 : 1;
@@ -260,20 +259,9 @@ TEST(RenderSnowCover, SnowOnASlopedRoofIsEvenWithoutStripes) {
     std::fill(roof.snow.begin(), roof.snow.end(), units);
     world.add<SnowSurface>(world.create(), std::move(roof));
     world.set_resource<Environment>();
-    ViewCamera camera;
-    camera.position = {-1.0f, 4.6f, 1.8f};
-    camera.look_at({1.5f, 2.9f, 0.0f});
-    const Image image = render_image(world, camera);
-    float lo = 255.0f, hi = 0.0f;
-    for (int k = 0; k <= 400; ++k) {
-        const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
-        const glm::vec3 p{x, 2.03f + 0.58f * x, 0.3f};
-        const float b = brightness(mean_color(image, to_pixel(camera, p), 0));
-        lo = std::min(lo, b);
-        hi = std::max(hi, b);
-    }
-    EXPECT_GT(lo, 150.0f) << "the roof is covered";
-    EXPECT_LT(hi - lo, 3.0f) << "brightness varies down the slope: stripes";
+    const glm::vec2 range = brightness_down_the_slope(world, 2.03f);
+    EXPECT_GT(range.x, 150.0f) << "the roof is covered";
+    EXPECT_LT(range.y - range.x, 3.0f) << "brightness varies down the slope: stripes";
 }
 
 TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {

@@ -261,7 +261,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     scene.world.set_resource<Fog>(fog);
     renderer.render(scene.world, scene.camera);
     const std::vector<std::string> effects = {"sky",           "meshes", "snow_surfaces",
-                                              "spectral_snow", "flakes",        "fog_puffs"};
+                                              "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
     for (const PassTiming& p : renderer.timings().passes) {
         EXPECT_TRUE(p.ran) << p.name;
@@ -343,8 +343,10 @@ struct HorizonScene {
     HorizonScene() {
         MeshRenderable ground;
         ground.name = "ground";
-        ground.positions = {{-60.0f, 0.0f, far_edge_z}, {60.0f, 0.0f, far_edge_z},
-                            {60.0f, 0.0f, 12.0f},       {-60.0f, 0.0f, 12.0f}};
+        ground.positions = {{-60.0f, 0.0f, far_edge_z},
+                            {60.0f, 0.0f, far_edge_z},
+                            {60.0f, 0.0f, 12.0f},
+                            {-60.0f, 0.0f, 12.0f}};
         ground.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
         ground.indices = {0, 2, 1, 0, 3, 2};
         ground.color = {0.3f, 0.3f, 0.3f};
@@ -413,9 +415,28 @@ TEST(RenderSpectral, FarFieldMeetsTheHorizonWithoutASeam) {
     const int near_row = to_pixel(scene.camera, {0.0f, 0.0f, 0.0f}).y; // 10 m away
     EXPECT_LT(std::abs(rows[static_cast<std::size_t>(near_row)]), 0.01);
     for (int y = horizon + 3; y < near_row; ++y) {
-        EXPECT_LT(std::abs(rows[static_cast<std::size_t>(y + 1)] - rows[static_cast<std::size_t>(y)]),
-                  0.1 * sky)
+        EXPECT_LT(
+            std::abs(rows[static_cast<std::size_t>(y + 1)] - rows[static_cast<std::size_t>(y)]),
+            0.1 * sky)
             << "a step between rows " << y << " and " << y + 1;
+    }
+}
+
+/// `count` flakes at fixed quasi-random places in the box lo..hi (golden-ratio
+/// sequences), diameters from size_lo to size_hi.
+void scatter_flakes(World& world, int count, const glm::vec3& lo, const glm::vec3& hi,
+                    float size_lo, float size_hi) {
+    FlakePool& pool = world.set_resource<FlakePool>();
+    pool.reset(static_cast<std::uint32_t>(count));
+    const auto at = [](int i, double step) { return static_cast<float>(std::fmod(i * step, 1.0)); };
+    for (int i = 0; i < count; ++i) {
+        std::uint32_t slot = 0;
+        ASSERT_TRUE(pool.acquire(slot));
+        pool.px[slot] = lo.x + (hi.x - lo.x) * at(i, 0.6180339887);
+        pool.py[slot] = lo.y + (hi.y - lo.y) * at(i, 0.7548776662);
+        pool.pz[slot] = lo.z + (hi.z - lo.z) * at(i, 0.5698402910);
+        pool.size[slot] = size_lo + (size_hi - size_lo) * at(i, 0.3819660113);
+        pool.mass_units[slot] = 1;
     }
 }
 
@@ -423,17 +444,7 @@ TEST(RenderSpectral, FlakesHandOverToTheLayerBeyondTheHandOverDistance) {
     // 4000 flakes 30 m ahead: all drawn without the layer (no level of
     // detail), a share (h/d)² = (12/30)² = 16 % with it, h the hand-over.
     World world;
-    FlakePool& pool = world.set_resource<FlakePool>();
-    pool.reset(4000);
-    for (int i = 0; i < 4000; ++i) {
-        std::uint32_t slot = 0;
-        ASSERT_TRUE(pool.acquire(slot));
-        pool.px[slot] = -3.0f + 6.0f * static_cast<float>(std::fmod(i * 0.6180339887, 1.0));
-        pool.py[slot] = 2.0f + 2.0f * static_cast<float>(std::fmod(i * 0.7548776662, 1.0));
-        pool.pz[slot] = -20.0f;
-        pool.size[slot] = 0.01f;
-        pool.mass_units[slot] = 1;
-    }
+    scatter_flakes(world, 4000, {-3.0f, 2.0f, -20.0f}, {3.0f, 4.0f, -20.0f}, 0.01f, 0.01f);
     ViewCamera camera;
     camera.position = {0.0f, 3.0f, 10.0f};
     camera.look_at({0.0f, 3.0f, -20.0f});
@@ -459,24 +470,14 @@ TEST(RenderGolden, FarFieldTakesOverFromTheFlakesAtTheHorizon) {
     // edge, thinned beyond the 12 m hand-over as the far-field layer takes
     // over, on the ground as on the sky (compare with the horizon test above).
     HorizonScene scene;
-    FlakePool& pool = scene.world.set_resource<FlakePool>();
-    pool.reset(3000);
-    for (int i = 0; i < 3000; ++i) {
-        std::uint32_t slot = 0;
-        ASSERT_TRUE(pool.acquire(slot));
-        pool.px[slot] = -15.0f + 30.0f * static_cast<float>(std::fmod(i * 0.6180339887, 1.0));
-        pool.py[slot] = 0.2f + 8.0f * static_cast<float>(std::fmod(i * 0.7548776662, 1.0));
-        pool.pz[slot] = -30.0f + 38.0f * static_cast<float>(std::fmod(i * 0.5698402910, 1.0));
-        pool.size[slot] = 0.012f + 0.012f * static_cast<float>(std::fmod(i * 0.3819660113, 1.0));
-        pool.mass_units[slot] = 1;
-    }
+    scatter_flakes(scene.world, 3000, {-15.0f, 0.2f, -30.0f}, {15.0f, 8.2f, 8.0f}, 0.012f, 0.024f);
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
     scene.world.set_resource<SpectralSnow>(s);
     RenderSettings dark_ground; // bare albedo, so the white snow shows on the ground too
     dark_ground.mesh_snow = 0.0f;
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.camera, dark_ground),
-                               "far_field_horizon"));
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.camera, dark_ground), "far_field_horizon"));
 }
 
 TEST(RenderSpectral, AnimatesWithTheSimulationClock) {

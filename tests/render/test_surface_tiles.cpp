@@ -1,8 +1,8 @@
 // The CPU half of the tiled snow heightfield (render/surface_tiles.hpp): patch
 // index lists with skirts, the level for a distance, per-tile change
 // detection, culling and the texels a tile uploads.
-#include "render/surface_tiles.hpp"
 #include "render/camera.hpp"
+#include "render/surface_tiles.hpp"
 #include "render_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -35,11 +35,11 @@ TEST(SurfaceTiles, PatchIndicesCoverTheGridAndTheAskedSkirts) {
                 EXPECT_EQ(idx[k + 1], t0 + n * n);
                 EXPECT_EQ(idx[k + 5], t1 + n * n);
                 const std::uint32_t x0 = t0 % n, z0 = t0 / n, x1 = t1 % n, z1 = t1 / n;
-                const std::uint32_t edge = x0 == 0 && x1 == 0             ? skirt_low_x
-                                           : x0 == n - 1 && x1 == n - 1   ? skirt_high_x
-                                           : z0 == 0 && z1 == 0           ? skirt_low_z
-                                           : z0 == n - 1 && z1 == n - 1   ? skirt_high_z
-                                                                          : 0u;
+                const std::uint32_t edge = x0 == 0 && x1 == 0           ? skirt_low_x
+                                           : x0 == n - 1 && x1 == n - 1 ? skirt_high_x
+                                           : z0 == 0 && z1 == 0         ? skirt_low_z
+                                           : z0 == n - 1 && z1 == n - 1 ? skirt_high_z
+                                                                        : 0u;
                 EXPECT_NE(edge & skirts, 0u) << "a segment of an asked edge";
             }
         }
@@ -186,7 +186,8 @@ TEST(SurfaceTiles, SelectCullsAndCoarsensWithDistance) {
         EXPECT_TRUE(seen.emplace(d.first.x, d.first.y).second) << "each tile once";
         if (k > 0) {
             const TileDraw& p = draws[k - 1];
-            EXPECT_LE(std::tuple(p.edges, p.level, p.skirts), std::tuple(d.edges, d.level, d.skirts))
+            EXPECT_LE(std::tuple(p.edges, p.level, p.skirts),
+                      std::tuple(d.edges, d.level, d.skirts))
                 << "tiles drawn alike are adjacent";
         }
         const float z = s.z0 + (static_cast<float>(d.first.y) + 16.0f) * s.cell;
