@@ -87,8 +87,15 @@ std::uint64_t tile_checksum(const SnowSurface& s, const TileCells& c) {
     return h;
 }
 
-/// (lowest bare top, highest snow top) of the tile's cells that carry snow;
-/// an empty range (lo > hi) when none does.
+/// The cells a tile's samples span: its own and the first column and row of
+/// its +x and +z neighbours (the last samples of a tile are the first of the
+/// next, so neighbouring tiles share their edge).
+TileCells reach_of(const SnowSurface& s, const TileCells& c) {
+    return {c.x0, c.z0, std::min(c.x1 + 1, s.nx), std::min(c.z1 + 1, s.nz)};
+}
+
+/// (lowest bare top, highest snow top) of the cells that carry snow; an empty
+/// range (lo > hi) when none does.
 glm::vec2 tile_range(const SnowSurface& s, const TileCells& c) {
     std::int64_t lo = std::numeric_limits<std::int64_t>::max();
     std::int64_t hi = std::numeric_limits<std::int64_t>::min();
@@ -104,11 +111,10 @@ glm::vec2 tile_range(const SnowSurface& s, const TileCells& c) {
     return lo > hi ? glm::vec2(1.0f, 0.0f) : glm::vec2(s.height(lo), s.height(hi));
 }
 
-/// True when the bare top jumps like an edge between neighbouring cells the
-/// tile's samples span: its own and the first row and column of the next tiles.
+/// True when the bare top jumps like an edge between neighbouring cells.
 bool tile_has_edges(const SnowSurface& s, const TileCells& c) {
     const double limit = surface_edge_slope * s.cell / s.unit_height; // in levels
-    const std::uint32_t x_end = std::min(c.x1 + 1, s.nx), z_end = std::min(c.z1 + 1, s.nz);
+    const std::uint32_t x_end = c.x1, z_end = c.z1;
     const auto jumps = [&](std::size_t a, std::size_t b) {
         return std::abs(static_cast<double>(s.base_level[a] - s.base_level[b])) > limit;
     };
@@ -281,18 +287,19 @@ const std::vector<std::uint32_t>& SurfaceTiles::rescan(const SnowSurface& s) {
         const std::uint64_t sum = tile_checksum(s, c);
         if (grid_changed_ || sum != checksum_[t]) {
             checksum_[t] = sum;
-            range_[t] = tile_range(s, c);
             changed_.push_back(t);
         }
     }
     // A tile's samples reach the first cells of its +x and +z neighbours, so
-    // its edge flag and index list follow theirs too.
+    // its height range, edge flag and index list follow theirs too.
     for (const std::uint32_t t : changed_) {
         const std::uint32_t tx = t % tiles_x_, tz = t / tiles_x_;
         for (std::uint32_t dz = 0; dz <= std::min(tz, 1u); ++dz) {
             for (std::uint32_t dx = 0; dx <= std::min(tx, 1u); ++dx) {
                 const std::uint32_t u = t - dz * tiles_x_ - dx;
-                edges_[u] = tile_has_edges(s, cells_of(s, u, tiles_x_)) ? 1 : 0;
+                const TileCells reach = reach_of(s, cells_of(s, u, tiles_x_));
+                range_[u] = tile_range(s, reach);
+                edges_[u] = tile_has_edges(s, reach) ? 1 : 0;
                 ++version_[u];
             }
         }
@@ -309,7 +316,7 @@ std::uint64_t SurfaceTiles::select(const SnowSurface& s, const TileView& view,
         if (range.x > range.y) {
             continue; // no snow in the tile: the bare top below shows
         }
-        const TileCells c = cells_of(s, t, tiles_x_);
+        const TileCells c = reach_of(s, cells_of(s, t, tiles_x_));
         const glm::vec3 lo(s.x0 + static_cast<float>(c.x0) * s.cell, range.x,
                            s.z0 + static_cast<float>(c.z0) * s.cell);
         const glm::vec3 hi(s.x0 + static_cast<float>(c.x1) * s.cell, range.y,

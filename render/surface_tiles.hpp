@@ -94,7 +94,9 @@ class SurfaceTiles {
     [[nodiscard]] bool grid_changed() const { return grid_changed_; }
     [[nodiscard]] std::uint32_t tiles_x() const { return tiles_x_; }
     [[nodiscard]] std::uint32_t tiles_z() const { return tiles_z_; }
-    /// Lowest bare top and highest snow top (m) of a tile, as last scanned.
+    /// Lowest bare top and highest snow top (m) of the cells with snow that a
+    /// tile's samples span (its own, the first of its +x, +z neighbours), as
+    /// last scanned; empty (x > y) when none has snow: the tile is not drawn.
     [[nodiscard]] glm::vec2 height_range(std::uint32_t tile) const { return range_[tile]; }
 
     /// True when the bare top jumps like an edge inside the tile or toward

@@ -129,6 +129,13 @@ TEST(SurfaceTiles, HeightRangeCoversTheSnowOfTheTile) {
     std::vector<TileDraw> draws{TileDraw{}};
     tiles.select(s, view, draws);
     EXPECT_TRUE(draws.empty());
+    // Snow in the first column of tile 1 is reached by tile 0's last samples
+    // too: both are drawn (tile 0's last quads lead up to it), tile 2 is not.
+    s.snow[s.index(32, 10)] = 50;
+    static_cast<void>(tiles.rescan(s));
+    EXPECT_LE(tiles.height_range(0).x, tiles.height_range(0).y);
+    EXPECT_LE(tiles.height_range(1).x, tiles.height_range(1).y);
+    EXPECT_GT(tiles.height_range(2).x, tiles.height_range(2).y);
 }
 
 TEST(SurfaceTiles, EdgeFlagsFollowJumpsOfTheBareTopIntoTheNextTile) {
