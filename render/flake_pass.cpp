@@ -1,5 +1,9 @@
 #include "render/flake_pass.hpp"
 
+#include "render/far_field.hpp"
+
+#include <optional>
+
 namespace snow {
 
 bool FlakePass::wanted(const World& world) const {
@@ -20,6 +24,12 @@ void FlakePass::run(const World& world, FrameContext& frame) {
     sel.lod = frame.settings.flake_lod == FlakeLod::always ||
               (frame.settings.flake_lod == FlakeLod::automatic && frame.software_gl);
     sel.lod_distance = frame.settings.lod_distance;
+    // With far-field snow the flakes thin out beyond the hand-over as the layer
+    // takes their place (far_field.hpp), level of detail or not.
+    if (const std::optional<float> handover = far_field_handover(world, frame.settings)) {
+        sel.lod = true;
+        sel.lod_distance = *handover;
+    }
     const std::uint32_t count = select_flakes(pool, sel, staging_);
     frame.stats.flakes_alive = pool.alive;
     frame.stats.flakes_drawn = count;

@@ -19,9 +19,12 @@ struct FrameTimings {
     double frame_ms = 0.0;          ///< whole render() call
     bool synchronous = false;       ///< RenderSettings::timing_mode was on
     std::uint32_t flakes_alive = 0;
-    std::uint32_t flakes_drawn = 0;      ///< after culling and level of detail
-    std::uint32_t surfaces_uploaded = 0; ///< snow surfaces whose mesh changed this frame
-    std::uint32_t meshes_uploaded = 0;   ///< scene meshes uploaded this frame
+    std::uint32_t flakes_drawn = 0;           ///< after culling and level of detail
+    std::uint32_t surfaces_uploaded = 0;      ///< snow surfaces with a changed tile this frame
+    std::uint32_t surface_tiles_uploaded = 0; ///< their changed tiles (only these are re-uploaded)
+    std::uint32_t surface_tiles_drawn = 0;    ///< after culling, every level of detail
+    std::uint32_t surface_samples = 0;        ///< heightfield samples of those tiles
+    std::uint32_t meshes_uploaded = 0;        ///< scene meshes uploaded this frame
 };
 
 } // namespace snow

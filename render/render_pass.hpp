@@ -36,7 +36,7 @@ struct FrameContext {
 };
 
 /// Interface of a pass. Built-in order (Renderer::pass_names()):
-/// "sky" → "snow_surfaces" → "meshes" → "flakes"; far-field snow [LZ] goes
+/// "sky" → "meshes" → "snow_surfaces" → "flakes"; far-field snow [LZ] goes
 /// before "flakes" and fog puffs [PE] after it, via Renderer::insert_pass.
 class RenderPass {
   public:

@@ -25,6 +25,12 @@ struct RenderSettings {
     float exposure_tolerance = occlusion_tolerance;
     /// Snow cover thinner than this (m) is not drawn; the bare top shows.
     float min_snow_depth = 0.002f;
+    /// Level of detail of snow surfaces: a tile samples every 2^l-th cell, the
+    /// coarsest level whose samples lie at most this many pixels apart ...
+    float surface_spacing_px = 4.0f;
+    /// ... widened (by √2 steps) until a surface draws at most this many
+    /// heightfield samples per frame (llvmpipe is bound by its triangles).
+    std::uint32_t surface_samples = 20000;
     /// Falloff k of point lights: intensity / (1 + k·d²), d in metres.
     float light_falloff = 0.01f;
 

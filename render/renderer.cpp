@@ -94,10 +94,9 @@ Renderer::Renderer(GlContext& context, RenderSettings settings)
                       renderer.find("softpipe") != std::string::npos ||
                       renderer.find("swrast") != std::string::npos;
     impl_->passes.push_back(std::make_unique<SkyPass>());
-    // Snow before the meshes it lies on: their hidden fragments then fail the
-    // early depth test (llvmpipe is fill-bound on large ground planes).
-    impl_->passes.push_back(std::make_unique<SurfacePass>());
+    // Snow after the meshes it lies on: it is blended over them by incline.
     impl_->passes.push_back(std::make_unique<MeshPass>());
+    impl_->passes.push_back(std::make_unique<SurfacePass>());
     impl_->passes.push_back(std::make_unique<FlakePass>());
     glBindBuffer(GL_UNIFORM_BUFFER, impl_->frame_ubo.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameBlock), nullptr, GL_DYNAMIC_DRAW);
@@ -192,6 +191,7 @@ void Renderer::render(const World& world, const ViewCamera& camera) {
     FrameTimings& t = m.timings;
     t.synchronous = m.settings.timing_mode;
     t.flakes_alive = t.flakes_drawn = t.surfaces_uploaded = t.meshes_uploaded = 0;
+    t.surface_tiles_uploaded = t.surface_tiles_drawn = t.surface_samples = 0;
     t.passes.resize(m.passes.size() + 1);
     t.passes[0].name = "setup";
 

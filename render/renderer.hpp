@@ -20,8 +20,8 @@ namespace snow {
 
 /// Create, use and destroy it with `context` current. Passes, in order:
 ///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
-///   "snow_surfaces" SnowSurface heightfields + aprons [WF §6]
 ///   "meshes"        MeshRenderable, lit, snow-white where exposed [SKY]
+///   "snow_surfaces" SnowSurface tiled heightfields + skirts [WF §6]
 ///   (far-field spectral snow [LZ]: insert_pass("flakes", ...))
 ///   "flakes"        FlakePool point sprites ([ZCL], [SKY])
 ///   (fog puffs [PE]: insert_pass("", ...) appends after "flakes")

@@ -1,5 +1,6 @@
 #include "render/spectral_pass.hpp"
 
+#include "render/far_field.hpp"
 #include "render/fullscreen.hpp"
 #include "render/spectral_volume.hpp"
 #include "systems/emitter.hpp"
@@ -126,12 +127,17 @@ void SpectralPass::run(const World& world, FrameContext& frame) {
     if (!built_for_ || !same_volume(*built_for_, s) || built_seed_ != seed) {
         build(s, seed);
     }
+    // The layer takes over from the flakes at the hand-over distance (a start
+    // of 0: everywhere), and its nearest band falls like a flake there.
+    const float start = far_field_handover(world, frame.settings).value_or(0.0f);
+    SpectralSnow mapped = s;
+    mapped.start_distance = start;
     const float fall = particle_fall_speed(world);
-    const SpectralMapping map = spectral_mapping(s, frame.camera.fov_y_deg, frame.viewport.y, fall);
+    const SpectralMapping map =
+        spectral_mapping(mapped, frame.camera.fov_y_deg, frame.viewport.y, fall);
     double phase = world_seconds(world) / map.loop_seconds; // t mod loop, in double
     phase -= std::floor(phase);
-    const float start = s.start_distance;
-    const float full = std::max(2.0f * start, start + 1.0f);
+    const float full = std::max(2.0f * start, start + 1.0f); // its fog is taken there
 
     depth_.capture(frame.viewport);
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(spectral_volume_unit));

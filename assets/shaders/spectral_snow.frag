@@ -6,7 +6,7 @@ out vec4 frag_color;
 uniform sampler3D spectral_volume; // α(x, y, t): periodic in x, y and t
 uniform sampler2D scene_depth;     // depth of the opaque scene drawn so far
 uniform vec4 spectral_view;        // x: tiles per radian, y: wind shear, z: loop phase, w: opacity
-uniform vec2 spectral_fade;        // x: start distance (the particles end), y: full strength
+uniform vec2 spectral_fade;        // x: hand-over distance h from the flakes, y: where it is fogged
 
 void main() {
     float depth = texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r;
@@ -14,10 +14,13 @@ void main() {
     vec3 ray = q.xyz / q.w - camera_pos.xyz;
     float d = length(ray);
     vec3 dir = ray / max(d, 1e-6);
-    // Only the snow beyond the particles, in front of the surface behind the
-    // pixel; faded toward zenith and nadir, where azimuth degenerates.
-    float fade = smoothstep(spectral_fade.x, spectral_fade.y, d) *
-                 (1.0 - smoothstep(0.75, 0.95, abs(dir.y)));
+    // The share of the snow in front of the surface behind the pixel that the
+    // flakes no longer draw: beyond h they are kept with probability (h/d)²
+    // (render/far_field.hpp), so 1 − (h/d)², continuous in d: no seam where
+    // the layer starts nor at the horizon. Faded toward zenith and nadir,
+    // where azimuth degenerates.
+    float kept = spectral_fade.x / max(d, spectral_fade.x);
+    float fade = (1.0 - kept * kept) * (1.0 - smoothstep(0.75, 0.95, abs(dir.y)));
     if (fade <= 0.0) {
         discard;
     }

@@ -1,17 +1,10 @@
-// surface.frag: settled snow, lit; bare cells are left to the mesh below.
-in vec3 v_world;
-in vec3 v_normal;
+// surface.frag: settled snow, lit and fogged per sample by surface.vert and
+// laid over the scene below by its incline [SKY], fading where it thins
+// below min_depth to the bare top (a sharp rim where the depth crosses it).
+in vec4 v_color;
 in float v_depth;
 out vec4 frag_color;
-uniform float min_depth; // metres of snow below which a fragment shows the bare top
+uniform float min_depth; // metres of snow below which the bare top shows
 void main() {
-    if (v_depth < min_depth) {
-        discard;
-    }
-    vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
-    vec3 color = snow_color.rgb * irradiance(n, v_world);
-#ifdef FOG
-    color = apply_fog(color, v_world);
-#endif
-    frag_color = vec4(color, 1.0);
+    frag_color = vec4(v_color.rgb, v_color.a * smoothstep(min_depth, 2.0 * min_depth, v_depth));
 }

@@ -43,7 +43,7 @@ Frame render_scene(const std::string& name, std::uint64_t ticks) {
 
 TEST(RenderEffectsScene, VillageWithoutEffectsRunsOnlyTheBuiltInPasses) {
     const Frame f = render_scene("village.gltf", 1);
-    const std::vector<std::string> builtin = {"sky", "snow_surfaces", "meshes", "flakes"};
+    const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
     EXPECT_EQ(f.passes, builtin);
 }
 
@@ -51,8 +51,8 @@ TEST(RenderGolden, VillageEffectsScene) {
     // Four seconds of snowfall: particles near the camera, the spectral layer
     // over the sky beyond them, the layered fog low over the ground and a puff.
     const Frame f = render_scene("village_effects.gltf", 240);
-    const std::vector<std::string> passes = {"sky",           "snow_surfaces", "meshes",
-                                             "spectral_snow", "flakes",        "fog_puffs"};
+    const std::vector<std::string> passes = {"sky",           "meshes", "snow_surfaces",
+                                             "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(f.passes, passes);
     EXPECT_TRUE(matches_golden(f.image, "village_effects"));
 }

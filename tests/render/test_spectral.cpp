@@ -4,6 +4,7 @@
 #include "render/renderer.hpp"
 #include "render/spectral_volume.hpp"
 #include "render_fixture.hpp"
+#include "systems/flake_pool.hpp"
 #include "systems/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -247,7 +248,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     auto context = headless_context();
     Renderer renderer(*context);
     renderer.render(scene.world, scene.camera);
-    const std::vector<std::string> builtin = {"sky", "snow_surfaces", "meshes", "flakes"};
+    const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
     EXPECT_EQ(renderer.pass_names(), builtin);
     for (const std::string& v : renderer.compiled_variants()) {
         EXPECT_EQ(v.find("spectral"), std::string::npos) << v;
@@ -259,8 +260,8 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     fog.puffs.push_back(FogPuff{{0.0f, 1.0f, 0.0f}, 1.0f, 0.5f, {}, 0.0f});
     scene.world.set_resource<Fog>(fog);
     renderer.render(scene.world, scene.camera);
-    const std::vector<std::string> effects = {"sky",           "snow_surfaces", "meshes",
-                                              "spectral_snow", "flakes",        "fog_puffs"};
+    const std::vector<std::string> effects = {"sky",           "meshes", "snow_surfaces",
+                                              "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
     for (const PassTiming& p : renderer.timings().passes) {
         EXPECT_TRUE(p.ran) << p.name;
@@ -332,6 +333,151 @@ TEST(RenderSpectral, LayerCoversTheFarFieldAndLeavesNearSurfacesAlone) {
     const double stddev = std::sqrt(std::max(0.0, mean2 / count - mean * mean));
     EXPECT_GT(changed / count, 3.0);
     EXPECT_GT(stddev, 2.0) << "the far-field snow has no texture";
+}
+
+/// A ground 120 m wide that ends 40 m ahead of the camera, the sky above it.
+struct HorizonScene {
+    World world;
+    ViewCamera camera;
+    float far_edge_z = -30.0f;
+    HorizonScene() {
+        MeshRenderable ground;
+        ground.name = "ground";
+        ground.positions = {{-60.0f, 0.0f, far_edge_z},
+                            {60.0f, 0.0f, far_edge_z},
+                            {60.0f, 0.0f, 12.0f},
+                            {-60.0f, 0.0f, 12.0f}};
+        ground.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+        ground.indices = {0, 2, 1, 0, 3, 2};
+        ground.color = {0.3f, 0.3f, 0.3f};
+        world.add<MeshRenderable>(world.create(), std::move(ground));
+        world.set_resource<Environment>();
+        camera.position = {0.0f, 3.0f, 10.0f};
+        camera.look_at({0.0f, 1.5f, far_edge_z});
+    }
+};
+
+/// Mean over each image row of the layer's opacity: out = a·snow + (1 − a)·in,
+/// solved per channel where the snow colour and the scene differ enough.
+std::vector<double> layer_by_row(const Image& with, const Image& without) {
+    const glm::vec3 snow = RenderSettings{}.snow_color * 255.0f;
+    std::vector<double> rows(static_cast<std::size_t>(with.height), 0.0);
+    for (int y = 0; y < with.height; ++y) {
+        double sum = 0.0;
+        int n = 0;
+        for (int x = 0; x < with.width; ++x) {
+            for (int k = 0; k < 3; ++k) {
+                const double in = without.pixel(x, y)[k], contrast = snow[k] - in;
+                if (std::abs(contrast) > 40.0) {
+                    sum += (with.pixel(x, y)[k] - in) / contrast;
+                    ++n;
+                }
+            }
+        }
+        rows[static_cast<std::size_t>(y)] = n > 0 ? sum / n : 0.0;
+    }
+    return rows;
+}
+
+TEST(RenderSpectral, FarFieldMeetsTheHorizonWithoutASeam) {
+    // The layer over a surface D away has the weight 1 − (h/D)², h the
+    // hand-over from the flakes (12 m: their lod_distance is nearer than the
+    // start): over the ground's last rows, 40 m away, it is nearly what it is
+    // over the sky just above them. Faded in from the start distance to twice
+    // it instead (as before), the ground's last rows got 40 % of the sky's
+    // opacity: a band where the streaks of the far field began.
+    HorizonScene scene;
+    RenderSettings dark_ground; // bare albedo: the white layer shows on it as on the sky
+    dark_ground.mesh_snow = 0.0f;
+    const Image without = render_image(scene.world, scene.camera, dark_ground);
+    SpectralSnow s = small_layer();
+    s.start_distance = 25.0f;
+    s.opacity = 0.6f;
+    scene.world.set_resource<SpectralSnow>(s);
+    const Image with = render_image(scene.world, scene.camera, dark_ground);
+    const std::vector<double> rows = layer_by_row(with, without);
+    const int horizon = to_pixel(scene.camera, {0.0f, 0.0f, scene.far_edge_z}).y;
+    ASSERT_GT(horizon, 40);
+    ASSERT_LT(horizon, golden_height - 40);
+    const auto mean = [&](int from, int to) {
+        double sum = 0.0;
+        for (int y = from; y <= to; ++y) {
+            sum += rows[static_cast<std::size_t>(y)];
+        }
+        return sum / (to - from + 1);
+    };
+    const double sky = mean(horizon - 30, horizon - 3);
+    const double above = mean(horizon - 5, horizon - 3), below = mean(horizon + 3, horizon + 5);
+    ASSERT_GT(sky, 0.1) << "the layer veils the sky";
+    EXPECT_LT(std::abs(above - below) / sky, 0.2)
+        << "the layer jumps at the horizon: " << above << " above, " << below << " below";
+    // Down the ground toward the camera it thins out steadily, gone by 12 m.
+    const int near_row = to_pixel(scene.camera, {0.0f, 0.0f, 0.0f}).y; // 10 m away
+    EXPECT_LT(std::abs(rows[static_cast<std::size_t>(near_row)]), 0.01);
+    for (int y = horizon + 3; y < near_row; ++y) {
+        EXPECT_LT(
+            std::abs(rows[static_cast<std::size_t>(y + 1)] - rows[static_cast<std::size_t>(y)]),
+            0.1 * sky)
+            << "a step between rows " << y << " and " << y + 1;
+    }
+}
+
+/// `count` flakes at fixed quasi-random places in the box lo..hi (golden-ratio
+/// sequences), diameters from size_lo to size_hi.
+void scatter_flakes(World& world, int count, const glm::vec3& lo, const glm::vec3& hi,
+                    float size_lo, float size_hi) {
+    FlakePool& pool = world.set_resource<FlakePool>();
+    pool.reset(static_cast<std::uint32_t>(count));
+    const auto at = [](int i, double step) { return static_cast<float>(std::fmod(i * step, 1.0)); };
+    for (int i = 0; i < count; ++i) {
+        std::uint32_t slot = 0;
+        ASSERT_TRUE(pool.acquire(slot));
+        pool.px[slot] = lo.x + (hi.x - lo.x) * at(i, 0.6180339887);
+        pool.py[slot] = lo.y + (hi.y - lo.y) * at(i, 0.7548776662);
+        pool.pz[slot] = lo.z + (hi.z - lo.z) * at(i, 0.5698402910);
+        pool.size[slot] = size_lo + (size_hi - size_lo) * at(i, 0.3819660113);
+        pool.mass_units[slot] = 1;
+    }
+}
+
+TEST(RenderSpectral, FlakesHandOverToTheLayerBeyondTheHandOverDistance) {
+    // 4000 flakes 30 m ahead: all drawn without the layer (no level of
+    // detail), a share (h/d)² = (12/30)² = 16 % with it, h the hand-over.
+    World world;
+    scatter_flakes(world, 4000, {-3.0f, 2.0f, -20.0f}, {3.0f, 4.0f, -20.0f}, 0.01f, 0.01f);
+    ViewCamera camera;
+    camera.position = {0.0f, 3.0f, 10.0f};
+    camera.look_at({0.0f, 3.0f, -20.0f});
+    RenderSettings settings;
+    settings.flake_lod = FlakeLod::never;
+    auto context = headless_context();
+    Renderer renderer(*context, settings);
+    renderer.render(world, camera);
+    EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
+    SpectralSnow s = small_layer();
+    s.start_distance = 25.0f;
+    world.set_resource<SpectralSnow>(s);
+    renderer.render(world, camera);
+    EXPECT_NEAR(renderer.timings().flakes_drawn, 4000.0 * (12.0 / 30.0) * (12.0 / 30.0), 60.0);
+    // A start of 0 puts the layer everywhere and leaves the flakes alone.
+    world.resource<SpectralSnow>().start_distance = 0.0f;
+    renderer.render(world, camera);
+    EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
+}
+
+TEST(RenderGolden, FarFieldTakesOverFromTheFlakesAtTheHorizon) {
+    // The horizon scene in falling snow: 3000 flakes out to the ground's far
+    // edge, thinned beyond the 12 m hand-over as the far-field layer takes
+    // over, on the ground as on the sky (compare with the horizon test above).
+    HorizonScene scene;
+    scatter_flakes(scene.world, 3000, {-15.0f, 0.2f, -30.0f}, {15.0f, 8.2f, 8.0f}, 0.012f, 0.024f);
+    SpectralSnow s = small_layer();
+    s.start_distance = 25.0f;
+    scene.world.set_resource<SpectralSnow>(s);
+    RenderSettings dark_ground; // bare albedo, so the white snow shows on the ground too
+    dark_ground.mesh_snow = 0.0f;
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.camera, dark_ground), "far_field_horizon"));
 }
 
 TEST(RenderSpectral, AnimatesWithTheSimulationClock) {
