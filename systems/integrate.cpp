@@ -2,6 +2,10 @@
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //
+// With a declared wind field each flake drags towards the field's wind at
+// its start-of-tick position (trilinear, WindSampler::at) instead of the one
+// global wind; the pass is the same loop with that read inside.
+//
 // The guarded pass is one branch-free loop over distinct (ivdep) arrays so
 // GCC vectorises it (selects need -fno-trapping-math, set project-wide); it
 // computes exactly what the scalar rule computes, lane by lane (no FMA
@@ -12,6 +16,7 @@
 #include "systems/sim_config.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
+#include "systems/wind_field.hpp"
 
 #include <bit>
 #include <cstdint>
@@ -35,6 +40,12 @@ struct Params {
     float dt;
 };
 
+/// The wind a flake drags towards: the global wind, or the field's at its position.
+struct GlobalWind {
+    glm::vec3 w;
+    [[nodiscard]] glm::vec3 at(float, float, float) const { return w; }
+};
+
 /// Base pointers of the pool arrays one pass reads and writes.
 struct Lanes {
     float* px;
@@ -55,8 +66,9 @@ inline float blend(std::uint32_t mask, float a, float b) {
 
 /// The rule for every alive slot of [0, n) whose c·dt <= limit; returns how
 /// many alive slots were over the limit (left untouched for the exact pass).
-template <AxisRule rule>
-std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const float limit) {
+template <AxisRule rule, typename Air>
+std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const Air air,
+                           const float limit) {
     float* px = l.px;
     float* py = l.py;
     float* pz = l.pz;
@@ -73,9 +85,10 @@ std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const 
         const float c = kom[i];
         const float x0 = px[i], y0 = py[i], z0 = pz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
-        rule(x, u, c, q.g.x, q.w.x, q.dt);
-        rule(y, v, c, q.g.y, q.w.y, q.dt);
-        rule(z, s, c, q.g.z, q.w.z, q.dt);
+        const glm::vec3 w = air.at(x0, y0, z0);
+        rule(x, u, c, q.g.x, w.x, q.dt);
+        rule(y, v, c, q.g.y, w.y, q.dt);
+        rule(z, s, c, q.g.z, w.z, q.dt);
         const bool alive = mass[i] != 0;
         const bool over = c * q.dt > limit;
         const bool use = alive & !over;
@@ -95,15 +108,17 @@ std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const 
 }
 
 /// Exact update for the alive slots of [0, n) a guarded pass skipped.
-void exact_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
+template <typename Air>
+void exact_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air, float limit) {
     for (std::size_t i = 0; i < n; ++i) {
         const float c = l.kom[i];
         if (l.mass[i] == 0 || !(c * q.dt > limit)) {
             continue;
         }
-        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, q.w.x, q.dt);
-        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, q.w.y, q.dt);
-        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, q.w.z, q.dt);
+        const glm::vec3 w = air.at(l.px[i], l.py[i], l.pz[i]);
+        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, w.x, q.dt);
+        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, w.y, q.dt);
+        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, w.z, q.dt);
     }
 }
 
@@ -112,11 +127,14 @@ void exact_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
 struct IntegratePass {
     Lanes lanes;
     Params q;
+    const WindField* field; ///< null: every flake feels q.w
     Integrator kind;
     std::uint32_t* stiff; ///< one count per chunk
 };
 
-std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
+template <typename Air>
+std::uint32_t integrate_chunk(const IntegratePass& p, const Air& air, std::size_t b,
+                              std::size_t e) {
     const Lanes& a = p.lanes;
     const Lanes l{a.px + b, a.py + b, a.pz + b,  a.vx + b,
                   a.vy + b, a.vz + b, a.kom + b, a.mass + b};
@@ -128,27 +146,34 @@ std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t
     switch (p.kind) {
     case Integrator::explicit_euler:
         limit = integrate::explicit_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
         break;
     case Integrator::automatic:
         limit = integrate::automatic_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
         break;
     case Integrator::rk4:
         limit = integrate::rk4_limit;
-        stiff = guarded_pass<integrate::rk4>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::rk4>(l, n, p.q, air, limit);
         break;
     case Integrator::semi_implicit_euler:
-        guarded_pass<integrate::semi_implicit_euler>(l, n, p.q, none);
+        guarded_pass<integrate::semi_implicit_euler>(l, n, p.q, air, none);
         break;
     case Integrator::exponential:
-        guarded_pass<integrate::exponential>(l, n, p.q, none);
+        guarded_pass<integrate::exponential>(l, n, p.q, air, none);
         break;
     }
     if (stiff > 0) {
-        exact_pass(l, n, p.q, limit);
+        exact_pass(l, n, p.q, air, limit);
     }
     return stiff;
+}
+
+std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
+    if (p.field != nullptr) {
+        return integrate_chunk(p, p.field->sampler(), b, e);
+    }
+    return integrate_chunk(p, GlobalWind{p.q.w}, b, e);
 }
 
 } // namespace
@@ -171,6 +196,7 @@ void integrate_system(World& w) {
     const IntegratePass pass{{f.px.data(), f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(),
                               f.vz.data(), f.k_over_m.data(), f.mass_units.data()},
                              {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt},
+                             w.try_resource<WindField>(),
                              cfg.integrator,
                              stiff.data()};
     for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {

@@ -11,6 +11,7 @@ namespace snow {
 
 void spawn_system(World& w);        ///< spawn.cpp: inactive flakes activate (seed 002 §4)
 void wind_system(World& w);         ///< wind_system.cpp: bounded random walk + gusts
+void wind_field_system(World& w);   ///< wind_field_system.cpp: stable fluids around obstacles
 void integrate_system(World& w);    ///< integrate.cpp: gravity + drag to wind
 void collide_system(World& w);      ///< collide.cpp: boxes, spheres, meshes, bounds
 void deposit_system(World& w);      ///< deposit.cpp: landing + rolling rules (seed 003 §IV)
