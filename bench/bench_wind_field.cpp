@@ -5,6 +5,7 @@
 #include "bench_scene.hpp"
 
 #include "systems/systems.hpp"
+#include <cstdlib>
 
 namespace snow::bench {
 namespace {
@@ -36,7 +37,7 @@ void field_step(benchmark::State& state) {
 void integrate_in_field(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
                   static_cast<unsigned>(state.range(1)));
-    bw.sim->set_wind_field(field_of_side(64));
+    bw.sim->set_wind_field(field_of_side(static_cast<std::uint32_t>(std::getenv("SIDE") ? std::atoi(std::getenv("SIDE")) : 64)));
     wind_field_system(bw.sim->world()); // the first step fills the field
     bw.start = bw.sim->save();
     std::uint64_t i = 0;

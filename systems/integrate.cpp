@@ -41,9 +41,14 @@ struct Params {
 };
 
 /// The wind a flake drags towards: the global wind, or the field's at its position.
+/// Both give it as scalars (WindSampler::at): a vec3 per lane stops GCC vectorising.
 struct GlobalWind {
-    glm::vec3 w;
-    [[nodiscard]] glm::vec3 at(float, float, float) const { return w; }
+    float x, y, z;
+    void at(float, float, float, float& wx, float& wy, float& wz) const {
+        wx = x;
+        wy = y;
+        wz = z;
+    }
 };
 
 /// Base pointers of the pool arrays one pass reads and writes.
@@ -85,10 +90,11 @@ std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const 
         const float c = kom[i];
         const float x0 = px[i], y0 = py[i], z0 = pz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
-        const glm::vec3 w = air.at(x0, y0, z0);
-        rule(x, u, c, q.g.x, w.x, q.dt);
-        rule(y, v, c, q.g.y, w.y, q.dt);
-        rule(z, s, c, q.g.z, w.z, q.dt);
+        float wx, wy, wz;
+        air.at(x0, y0, z0, wx, wy, wz);
+        rule(x, u, c, q.g.x, wx, q.dt);
+        rule(y, v, c, q.g.y, wy, q.dt);
+        rule(z, s, c, q.g.z, wz, q.dt);
         const bool alive = mass[i] != 0;
         const bool over = c * q.dt > limit;
         const bool use = alive & !over;
@@ -115,10 +121,11 @@ void exact_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air, 
         if (l.mass[i] == 0 || !(c * q.dt > limit)) {
             continue;
         }
-        const glm::vec3 w = air.at(l.px[i], l.py[i], l.pz[i]);
-        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, w.x, q.dt);
-        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, w.y, q.dt);
-        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, w.z, q.dt);
+        float wx, wy, wz;
+        air.at(l.px[i], l.py[i], l.pz[i], wx, wy, wz);
+        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, wx, q.dt);
+        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, wy, q.dt);
+        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, wz, q.dt);
     }
 }
 
@@ -173,7 +180,7 @@ std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t
     if (p.field != nullptr) {
         return integrate_chunk(p, p.field->sampler(), b, e);
     }
-    return integrate_chunk(p, GlobalWind{p.q.w}, b, e);
+    return integrate_chunk(p, GlobalWind{p.q.w.x, p.q.w.y, p.q.w.z}, b, e);
 }
 
 } // namespace

@@ -244,6 +244,7 @@ std::uint64_t Simulation::state_hash() const {
             h.span(std::span<const float>(v));
         }
         h.span(std::span<const float>(f->pressure));
+        h.value(f->inflow);
         h.value(f->wait);
         h.value(f->steps);
     }

@@ -98,11 +98,8 @@ void enforce(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow, st
         if (inflow_high(sides, a)) {
             each_in_plane(l, a, top, [&](std::int32_t i) { v[i] = inflow[a]; });
         }
-        const float* open = s.open[a].data();
-        float* d = v.data();
-        const std::size_t n = v.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            d[i] *= open[i];
+        for (const std::int32_t i : s.closed[a]) {
+            v[static_cast<std::size_t>(i)] = 0.0f;
         }
     }
 }
@@ -370,6 +367,24 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
     }
 }
 
+/// Adds a change of the inflow to the whole field. Incompressible air
+/// answers a change at the inflow at once everywhere, and a uniform change
+/// has no divergence, so the sweeps are left only the obstacles' share of it
+/// (without this, every gust would be a domain-wide error that a fixed
+/// number of sweeps, which carry information a few cells each, cannot clear).
+void shift(WindField& f, const glm::vec3& change) {
+    for (int a = 0; a < 3; ++a) {
+        if (change[a] == 0.0f) {
+            continue;
+        }
+        for (std::vector<float>* v : {&f.velocity[a], &f.at_centre[a]}) {
+            for (float& x : *v) {
+                x += change[a];
+            }
+        }
+    }
+}
+
 void project(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, std::uint8_t sides,
              std::uint32_t sweeps) {
     divergence(f, s.divergence);
@@ -448,7 +463,7 @@ void apply_obstacles(WindField& f, WindFieldSolver& s) {
     const Lattice& c = f.centre;
     for (int a = 0; a < 3; ++a) {
         const Lattice& l = f.face[a];
-        s.open[a].assign(l.size(), 1.0f);
+        s.closed[a].clear();
         s.advected[a].assign(l.size(), 0.0f);
         const std::int32_t up = c.stride(a);
         for (std::int32_t k = 0; k < l.dim[2]; ++k) {
@@ -456,8 +471,10 @@ void apply_obstacles(WindField& f, WindFieldSolver& s) {
                 const std::int32_t row = l.index(0, j, k), below = c.index(0, j, k);
                 for (std::int32_t i = 0; i < l.dim[0]; ++i) {
                     const bool shut = s.solid[below + i] != 0 || s.solid[below + i + up] != 0;
-                    s.open[a][row + i] = shut ? 0.0f : 1.0f;
-                    f.velocity[a][row + i] *= s.open[a][row + i];
+                    if (shut) {
+                        s.closed[a].push_back(row + i);
+                        f.velocity[a][static_cast<std::size_t>(row + i)] = 0.0f;
+                    }
                 }
             }
         }
@@ -478,6 +495,7 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
         enforce(f, s, inflow, sides);
         project(f, s, inflow, sides, initial_sweeps);
     } else {
+        shift(f, inflow - f.inflow);
         const Mixing mix = mixing(f, dt);
         for (int a = 0; a < 3; ++a) {
             advect(f, a, f.velocity[a], s.advected[a], dt);
@@ -492,18 +510,25 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
         fill_ghosts(f.velocity[a], f.face[a], inflow[a], sides);
     }
     centre_velocity(f, inflow, sides);
+    f.inflow = inflow;
     ++f.steps;
 }
 
 double wind_field_divergence(const WindField& f, const WindFieldSolver& s) {
     std::vector<float> d(f.centre.size(), 0.0f);
     divergence(f, d);
-    const double volume = 1.0 / (static_cast<double>(f.inv_cell.x) * f.inv_cell.y * f.inv_cell.z);
     double sum = 0.0;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-        sum += s.solid[i] == 0 ? std::abs(static_cast<double>(d[i])) * volume : 0.0;
-    }
-    return sum;
+    std::size_t open = 0;
+    each_row(f.centre, [&](std::int32_t row, std::int32_t, std::int32_t) {
+        for (std::int32_t i = 1; i < end(f.centre, 0); ++i) {
+            const auto q = static_cast<std::size_t>(row + i);
+            if (s.solid[q] == 0) {
+                sum += std::abs(static_cast<double>(d[q]));
+                ++open;
+            }
+        }
+    });
+    return open > 0 ? sum / static_cast<double>(open) : 0.0;
 }
 
 } // namespace snow

@@ -22,7 +22,7 @@ namespace snow {
 struct WindFieldDef {
     std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
     std::uint32_t update_every = 4;                         ///< ticks between solver steps
-    std::uint32_t pressure_iterations = 16; ///< red-black SOR sweeps per step (fixed)
+    std::uint32_t pressure_iterations = 8;  ///< red-black SOR sweeps per step (fixed)
     float eddy_viscosity = 0.1f;            ///< turbulent mixing (m²/s); 0: none
 };
 
@@ -115,14 +115,16 @@ struct WindSampler {
     glm::vec3 cells;        ///< cells per axis, as floats
 
     /// Wind (m/s) at world point (x, y, z), trilinear between cell centres;
-    /// points outside the bounds read the nearest boundary value.
-    [[nodiscard]] glm::vec3 at(float x, float y, float z) const {
+    /// points outside the bounds read the nearest boundary value. Scalars
+    /// out and always inlined, so flake loops vectorise.
+    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy, float& wz) const {
         const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
         const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
         const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
         const LatticePoint p = locate(centre, gx, gy, gz);
-        return {trilinear(c[0], centre, p), trilinear(c[1], centre, p),
-                trilinear(c[2], centre, p)};
+        wx = trilinear(c[0], centre, p);
+        wy = trilinear(c[1], centre, p);
+        wz = trilinear(c[2], centre, p);
     }
 };
 
@@ -140,6 +142,7 @@ struct WindField {
     // -- state --
     std::vector<float> velocity[3]; ///< u, v, w on their faces (m/s)
     std::vector<float> pressure;    ///< last projection's potential (warm start)
+    glm::vec3 inflow{0.0f};         ///< the global wind of the last step (m/s)
     std::uint32_t wait = 0;         ///< ticks until the next step
     std::uint64_t steps = 0;        ///< solver steps taken (0: not yet initialised)
 
@@ -148,7 +151,12 @@ struct WindField {
 
     /// What flakes read the field through (valid until the next step).
     [[nodiscard]] WindSampler sampler() const;
-    [[nodiscard]] glm::vec3 at(float x, float y, float z) const { return sampler().at(x, y, z); }
+    /// Wind (m/s) at world point (x, y, z); see WindSampler::at.
+    [[nodiscard]] glm::vec3 at(float x, float y, float z) const {
+        glm::vec3 w;
+        sampler().at(x, y, z, w.x, w.y, w.z);
+        return w;
+    }
 };
 
 inline WindSampler WindField::sampler() const {

@@ -30,7 +30,7 @@ struct WindFieldSolver {
     bool built = false;
     std::uint64_t geometry_version = 0;
     std::vector<std::uint8_t> solid; ///< per cell of the centre lattice (ghosts 0)
-    std::vector<float> open[3];      ///< per face: 1 between two open cells, else 0
+    std::vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
     std::vector<float> inv_diag;     ///< per cell: 1 / Σ coefficients of its open neighbours
     std::uint8_t diag_sides = 0xff;  ///< inflow sides inv_diag was built for
     /// Per cell of one plane, for (plane + colour) even and odd: the SOR
@@ -53,8 +53,8 @@ void apply_obstacles(WindField& f, WindFieldSolver& s);
 /// first step fills the field with the inflow and projects it [STAM §3].
 void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, float dt);
 
-/// Σ |divergence| · cell volume over the open cells (m³/s): how far the last
-/// projection is from incompressible (for tests).
+/// Mean |∇·u| over the open cells (1/s): how far the last projection is
+/// from incompressible (for tests).
 [[nodiscard]] double wind_field_divergence(const WindField& f, const WindFieldSolver& s);
 
 } // namespace snow

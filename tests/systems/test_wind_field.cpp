@@ -211,12 +211,21 @@ TEST(WindField, OpenGroundKeepsTheFreeStream) {
 }
 
 TEST(WindField, ProjectionLeavesTheAirNearlyIncompressible) {
-    auto sim = cube_in_wind(true);
-    sim->run(600);
-    const auto& s = sim->world().resource<WindFieldSolver>();
-    // Compare with the flux through the inflow side (2 m/s over 8 m × 12 m).
-    const double inflow = free_stream * 8.0 * 12.0;
-    EXPECT_LT(wind_field_divergence(field(*sim), s), 0.02 * inflow);
+    // The gusty yard: the inflow changes every step, the pressure is warm
+    // started from the last one, and pressure_iterations sweeps must keep
+    // up. Measure: the mean net flux out of a cell as a share of the flux
+    // the free stream carries through one of its faces.
+    auto sim = yard_in_field(1);
+    const WindField& f = field(*sim);
+    const double edge = std::cbrt(1.0 / (static_cast<double>(f.inv_cell.x) * f.inv_cell.y * f.inv_cell.z));
+    double worst = 0.0;
+    for (int t = 0; t < 6; ++t) {
+        sim->run(100);
+        const auto& s = sim->world().resource<WindFieldSolver>();
+        worst = std::max(worst, wind_field_divergence(f, s) * edge / free_stream);
+    }
+    EXPECT_LT(worst, 0.01);
+    RecordProperty("worst_relative_divergence", std::to_string(worst));
 }
 
 TEST(WindField, LeeOfABoxIsSheltered) {
