@@ -16,6 +16,7 @@ constexpr const char* smoke_filter = "--benchmark_filter="
                                      "|/side:256/landings:256(/|$)"
                                      "|/side:32(/|$)"
                                      "|/side:256/threads:1(/|$)"
+                                     "|/cells:32(/|$)"
                                      "|/resolution:256(/|$)"
                                      "|/mib:64/.*threads:1$"
                                      "|/cells:256/view:0/changed:0(/|$)";

@@ -2,6 +2,10 @@
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //
+// With a declared wind field each flake drags towards the field's wind at
+// its start-of-tick position (trilinear, WindSampler::at) instead of the one
+// global wind; the pass is the same loop with that read inside.
+//
 // The guarded pass is one branch-free loop over distinct (__restrict) arrays
 // so GCC and Clang vectorise it (selects need -fno-trapping-math, set
 // project-wide); it computes exactly what the scalar rule computes, lane by
@@ -13,6 +17,7 @@
 #include "systems/sim_config.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
+#include "systems/wind_field.hpp"
 
 #include <bit>
 #include <cstdint>
@@ -34,6 +39,17 @@ struct Params {
     glm::vec3 g;
     glm::vec3 w;
     float dt;
+};
+
+/// The wind a flake drags towards: the global wind, or the field's at its position.
+/// Both give it as scalars (WindSampler::at): a vec3 per lane stops GCC vectorising.
+struct GlobalWind {
+    float x, y, z;
+    void at(float, float, float, float& wx, float& wy, float& wz) const {
+        wx = x;
+        wy = y;
+        wz = z;
+    }
 };
 
 /// Base pointers of the pool arrays one pass reads and writes.
@@ -59,19 +75,21 @@ inline float blend(std::uint32_t mask, float a, float b) {
 /// The arrays are distinct (__restrict): that spares GCC the 20 run-time alias
 /// checks it would otherwise need (it gives up past 10 and stays scalar), and
 /// Clang the same.
-template <AxisRule rule>
+template <AxisRule rule, typename Air>
 std::uint32_t guarded_lanes(float* __restrict px, float* __restrict py, float* __restrict pz,
                             float* __restrict vx, float* __restrict vy, float* __restrict vz,
                             const float* __restrict kom, const std::uint32_t* __restrict mass,
-                            std::size_t n, const Params q, const float limit) {
+                            std::size_t n, const Params q, const Air air, const float limit) {
     std::uint32_t stiff = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const float c = kom[i];
         const float x0 = px[i], y0 = py[i], z0 = pz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
-        rule(x, u, c, q.g.x, q.w.x, q.dt);
-        rule(y, v, c, q.g.y, q.w.y, q.dt);
-        rule(z, s, c, q.g.z, q.w.z, q.dt);
+        float wx, wy, wz;
+        air.at(x0, y0, z0, wx, wy, wz);
+        rule(x, u, c, q.g.x, wx, q.dt);
+        rule(y, v, c, q.g.y, wy, q.dt);
+        rule(z, s, c, q.g.z, wz, q.dt);
         const bool alive = mass[i] != 0;
         const bool over = c * q.dt > limit;
         const bool use = alive & !over;
@@ -90,21 +108,26 @@ std::uint32_t guarded_lanes(float* __restrict px, float* __restrict py, float* _
     return stiff;
 }
 
-template <AxisRule rule>
-std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
-    return guarded_lanes<rule>(l.px, l.py, l.pz, l.vx, l.vy, l.vz, l.kom, l.mass, n, q, limit);
+template <AxisRule rule, typename Air>
+std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air,
+                           float limit) {
+    return guarded_lanes<rule>(l.px, l.py, l.pz, l.vx, l.vy, l.vz, l.kom, l.mass, n, q, air,
+                               limit);
 }
 
 /// Exact update for the alive slots of [0, n) a guarded pass skipped.
-void exact_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
+template <typename Air>
+void exact_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air, float limit) {
     for (std::size_t i = 0; i < n; ++i) {
         const float c = l.kom[i];
         if (l.mass[i] == 0 || !(c * q.dt > limit)) {
             continue;
         }
-        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, q.w.x, q.dt);
-        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, q.w.y, q.dt);
-        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, q.w.z, q.dt);
+        float wx, wy, wz;
+        air.at(l.px[i], l.py[i], l.pz[i], wx, wy, wz);
+        integrate::exponential(l.px[i], l.vx[i], c, q.g.x, wx, q.dt);
+        integrate::exponential(l.py[i], l.vy[i], c, q.g.y, wy, q.dt);
+        integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, wz, q.dt);
     }
 }
 
@@ -113,11 +136,14 @@ void exact_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
 struct IntegratePass {
     Lanes lanes;
     Params q;
+    const WindField* field; ///< null: every flake feels q.w
     Integrator kind;
     std::uint32_t* stiff; ///< one count per chunk
 };
 
-std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
+template <typename Air>
+std::uint32_t integrate_chunk(const IntegratePass& p, const Air& air, std::size_t b,
+                              std::size_t e) {
     const Lanes& a = p.lanes;
     const Lanes l{a.px + b, a.py + b, a.pz + b,  a.vx + b,
                   a.vy + b, a.vz + b, a.kom + b, a.mass + b};
@@ -129,27 +155,34 @@ std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t
     switch (p.kind) {
     case Integrator::explicit_euler:
         limit = integrate::explicit_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
         break;
     case Integrator::automatic:
         limit = integrate::automatic_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
         break;
     case Integrator::rk4:
         limit = integrate::rk4_limit;
-        stiff = guarded_pass<integrate::rk4>(l, n, p.q, limit);
+        stiff = guarded_pass<integrate::rk4>(l, n, p.q, air, limit);
         break;
     case Integrator::semi_implicit_euler:
-        guarded_pass<integrate::semi_implicit_euler>(l, n, p.q, none);
+        guarded_pass<integrate::semi_implicit_euler>(l, n, p.q, air, none);
         break;
     case Integrator::exponential:
-        guarded_pass<integrate::exponential>(l, n, p.q, none);
+        guarded_pass<integrate::exponential>(l, n, p.q, air, none);
         break;
     }
     if (stiff > 0) {
-        exact_pass(l, n, p.q, limit);
+        exact_pass(l, n, p.q, air, limit);
     }
     return stiff;
+}
+
+std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
+    if (p.field != nullptr) {
+        return integrate_chunk(p, p.field->sampler(), b, e);
+    }
+    return integrate_chunk(p, GlobalWind{p.q.w.x, p.q.w.y, p.q.w.z}, b, e);
 }
 
 } // namespace
@@ -172,6 +205,7 @@ void integrate_system(World& w) {
     const IntegratePass pass{{f.px.data(), f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(),
                               f.vz.data(), f.k_over_m.data(), f.mass_units.data()},
                              {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt},
+                             w.try_resource<WindField>(),
                              cfg.integrator,
                              stiff.data()};
     for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {

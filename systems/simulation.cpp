@@ -3,6 +3,7 @@
 #include "ecs/state_hash.hpp"
 #include "systems/jobs.hpp"
 #include "systems/validation.hpp"
+#include "systems/wind_field_solver.hpp"
 
 #include <cmath>
 #include <limits>
@@ -20,6 +21,11 @@ void throw_if(const std::string& error) {
 
 bool flakes_alive(const World& w) {
     return w.resource<FlakePool>().alive > 0;
+}
+
+bool same_grid(const WindField& a, const WindField& b) {
+    return a.n[0] == b.n[0] && a.n[1] == b.n[1] && a.n[2] == b.n[2] && a.origin == b.origin &&
+           a.inv_cell == b.inv_cell;
 }
 
 } // namespace
@@ -46,6 +52,7 @@ void Simulation::build_schedule() {
     schedule_.add("bodies", body_system, {needs<Body>()});
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
+    schedule_.add("wind_field", wind_field_system, {needs<WindField>()});
     schedule_.add("integrate", integrate_system, {flakes});
     schedule_.add("collide", collide_system, {flakes});
     schedule_.add("deposit", deposit_system, {needs<SnowSurface>(), flakes});
@@ -73,6 +80,17 @@ void Simulation::set_wind(const Wind& w) {
 
 void Simulation::clear_wind() {
     world_.erase_resource<Wind>();
+}
+
+void Simulation::set_wind_field(const WindFieldDef& def) {
+    throw_if(validate(def));
+    world_.set_resource<WindField>(make_wind_field(def, config().bounds));
+    world_.erase_resource<WindFieldSolver>(); // obstacles are marked for the new grid
+}
+
+void Simulation::clear_wind_field() {
+    world_.erase_resource<WindField>();
+    world_.erase_resource<WindFieldSolver>();
 }
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
@@ -314,6 +332,15 @@ std::uint64_t Simulation::state_hash() const {
         h.value(b.along);
         h.value(b.carried);
     });
+    if (const auto* f = world_.try_resource<WindField>()) {
+        for (const auto& v : f->velocity) {
+            h.span(std::span<const float>(v));
+        }
+        h.span(std::span<const float>(f->pressure));
+        h.value(f->inflow);
+        h.value(f->wait);
+        h.value(f->steps);
+    }
     return h.digest();
 }
 
@@ -355,6 +382,9 @@ std::unique_ptr<Snapshot> Simulation::save() const {
     if (const auto* w = world_.try_resource<Wind>()) {
         s->wind = *w;
     }
+    if (const auto* f = world_.try_resource<WindField>()) {
+        s->wind_field = *f;
+    }
     world_.each<SnowSurface>(
         [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
     world_.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
@@ -381,6 +411,14 @@ void Simulation::restore(const Snapshot& s) {
         world_.set_resource<Wind>(*s.wind);
     } else {
         world_.erase_resource<Wind>();
+    }
+    if (s.wind_field) {
+        if (const auto* f = world_.try_resource<WindField>(); f == nullptr || !same_grid(*f, *s.wind_field)) {
+            world_.erase_resource<WindFieldSolver>(); // obstacles are re-marked for its grid
+        }
+        world_.set_resource<WindField>(*s.wind_field);
+    } else {
+        clear_wind_field();
     }
     for (const auto& [e, surf] : s.surfaces) {
         world_.get<SnowSurface>(e) = surf;

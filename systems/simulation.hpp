@@ -21,6 +21,7 @@
 #include "systems/systems.hpp"
 #include "systems/visuals.hpp"
 #include "systems/wind.hpp"
+#include "systems/wind_field.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -49,6 +50,10 @@ class Simulation {
     Entity add_emitter(const Emitter& e);
     void set_wind(const Wind& w);
     void clear_wind();
+    /// A wind field over the bounds that the colliders shape; the global wind
+    /// (if set) blows in on its upwind sides. Replaces any field there was.
+    void set_wind_field(const WindFieldDef& def);
+    void clear_wind_field();
     /// A snow surface entity; `owner` is the solid it lies on (null for the
     /// ground). Flakes reaching an owner's top are kept only where one of its
     /// surfaces covers that point.

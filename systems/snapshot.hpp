@@ -9,6 +9,7 @@
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/wind.hpp"
+#include "systems/wind_field.hpp"
 
 #include <optional>
 #include <utility>
@@ -23,6 +24,7 @@ struct Snapshot {
     SimClock clock;
     MassLedger ledger;
     std::optional<Wind> wind;
+    std::optional<WindField> wind_field; ///< the whole field: state and what derives from it
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
     std::vector<std::pair<Entity, Body>> bodies;
 };

@@ -13,6 +13,7 @@ void cover_system(World& w);        ///< snow_cover.cpp: covers follow the geome
 void body_system(World& w);         ///< body_motion.cpp: moving bodies take this tick's pose
 void spawn_system(World& w);        ///< spawn.cpp: inactive flakes activate [WF §4]
 void wind_system(World& w);         ///< wind_system.cpp: bounded random walk + gusts
+void wind_field_system(World& w);   ///< wind_field_system.cpp: stable fluids around obstacles
 void integrate_system(World& w);    ///< integrate.cpp: gravity + drag to wind
 void collide_system(World& w);      ///< collide.cpp: boxes, spheres, meshes, bounds
 void deposit_system(World& w);      ///< deposit.cpp: landing + rolling rules [ZCL §IV]

@@ -22,6 +22,10 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
         ASSERT_EQ(sim.nonfinite_count(), 0u) << "tick " << sim.tick_count();
     }
     for (const SystemStats& s : sim.schedule().stats()) {
+        if (s.name == "wind_field") {
+            EXPECT_EQ(s.calls, 0u) << "the village declares no wind field";
+            continue;
+        }
         EXPECT_GT(s.calls, 0u) << s.name << " never ran";
     }
     // Every surface (ground, both roof sides, porch, garage, the cover) holds snow.

@@ -163,6 +163,11 @@ std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     walker.motion = BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}},
                                1.5f, true};
     sim->add_body(walker);
+    WindFieldDef field; // a coarse one: the field's steps and sampling allocate nothing
+    field.cells_x = field.cells_z = 16;
+    field.cells_y = 8;
+    field.update_every = 2;
+    sim->set_wind_field(field);
     return sim;
 }
 

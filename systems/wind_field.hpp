@@ -1,0 +1,174 @@
+/// @file wind_field.hpp
+/// @brief A coarse wind field over the bounds that obstacles shape: stable
+/// fluids [STAM] on a staggered (MAC) grid, the global Wind as inflow on the
+/// upwind sides. Declared by a scene or absent; absent means no field, no
+/// cost, and flakes feel the global wind alone. See docs/wind_field.md.
+#pragma once
+
+#include "systems/geometry.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Settings to declare a field; see Simulation::set_wind_field().
+struct WindFieldDef {
+    std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
+    std::uint32_t update_every = 4;                         ///< ticks between solver steps
+    std::uint32_t pressure_iterations = 8;  ///< red-black SOR sweeps per step (fixed)
+    float eddy_viscosity = 0.1f;            ///< turbulent mixing (m²/s); 0: none
+};
+
+/// Largest cells_x·cells_y·cells_z a field may have.
+inline constexpr std::uint64_t max_wind_field_cells = 1ull << 24;
+
+[[nodiscard]] std::string validate(const WindFieldDef& d);
+
+/// One array of the staggered grid and how to read it. Storage is x fastest;
+/// an axis the samples sit at cell centres of has one ghost layer on each
+/// side (dim = n + 2, shift 0.5), an axis they sit on the faces of has none
+/// (dim = n + 1, shift 0). A point at cell coordinate g (world / cell size,
+/// from the bounds' min corner, in [0, n]) is at lattice coordinate g + shift.
+struct Lattice {
+    std::int32_t dim[3] = {0, 0, 0};
+    float shift[3] = {0.0f, 0.0f, 0.0f};
+    std::int32_t last[3] = {0, 0, 0}; ///< largest lower corner of a trilinear read
+
+    /// The array of samples at the faces normal to `face_axis` (0, 1, 2), or
+    /// at the cell centres for face_axis = 3, of an n[0] × n[1] × n[2] grid.
+    [[nodiscard]] static Lattice make(const std::uint32_t (&n)[3], int face_axis);
+    [[nodiscard]] std::int32_t index(std::int32_t i, std::int32_t j, std::int32_t k) const {
+        return i + dim[0] * (j + dim[1] * k);
+    }
+    [[nodiscard]] std::int32_t stride(int axis) const {
+        return axis == 0 ? 1 : (axis == 1 ? dim[0] : dim[0] * dim[1]);
+    }
+    [[nodiscard]] std::size_t size() const {
+        return static_cast<std::size_t>(dim[0]) * static_cast<std::size_t>(dim[1]) *
+               static_cast<std::size_t>(dim[2]);
+    }
+};
+
+/// v limited to [lo, hi] by value, without branches (std::clamp, on
+/// references, keeps GCC from vectorising the loops it is in); NaN gives lo,
+/// so no read leaves the grid.
+inline float clamp_value(float v, float lo, float hi) {
+    return std::min(std::max(lo, v), hi);
+}
+
+/// The lower corner and weights of a trilinear read; g is in cell
+/// coordinates, already clamped to [0, n] on each axis.
+struct LatticePoint {
+    std::int32_t base;
+    float tx, ty, tz;
+};
+
+inline LatticePoint locate(const Lattice& l, float gx, float gy, float gz) {
+    const float lx = gx + l.shift[0], ly = gy + l.shift[1], lz = gz + l.shift[2];
+    // Non-negative, so truncation is floor; the last corner keeps i + 1 inside.
+    const std::int32_t i = std::min(static_cast<std::int32_t>(lx), l.last[0]);
+    const std::int32_t j = std::min(static_cast<std::int32_t>(ly), l.last[1]);
+    const std::int32_t k = std::min(static_cast<std::int32_t>(lz), l.last[2]);
+    return {i + l.dim[0] * (j + l.dim[1] * k), lx - static_cast<float>(i),
+            ly - static_cast<float>(j), lz - static_cast<float>(k)};
+}
+
+/// Samples b and b + 1 of d, read as one 8-byte load: in a vectorised loop
+/// that is one 64-bit gather lane instead of two 32-bit ones.
+inline void pair_at(const float* d, std::int32_t b, float& lo, float& hi) {
+    std::uint64_t v;
+    std::memcpy(&v, d + b, sizeof v);
+    lo = std::bit_cast<float>(static_cast<std::uint32_t>(v));
+    hi = std::bit_cast<float>(static_cast<std::uint32_t>(v >> 32));
+}
+
+inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) {
+    const std::int32_t sy = l.dim[0], sz = l.dim[0] * l.dim[1];
+    float a0, a1, b0, b1, c0, c1, e0, e1;
+    pair_at(d, p.base, a0, a1);
+    pair_at(d, p.base + sy, b0, b1);
+    pair_at(d, p.base + sz, c0, c1);
+    pair_at(d, p.base + sy + sz, e0, e1);
+    const float x00 = a0 + p.tx * (a1 - a0);
+    const float x10 = b0 + p.tx * (b1 - b0);
+    const float x01 = c0 + p.tx * (c1 - c0);
+    const float x11 = e0 + p.tx * (e1 - e0);
+    const float y0 = x00 + p.ty * (x10 - x00);
+    const float y1 = x01 + p.ty * (x11 - x01);
+    return y0 + p.tz * (y1 - y0);
+}
+
+/// Reads the cell-centre velocities of a field: plain values and pointers,
+/// so a flake loop holding one by value vectorises.
+struct WindSampler {
+    const float* c[3];      ///< cell-centre u, v, w on the centre lattice
+    Lattice centre;
+    glm::vec3 origin;       ///< bounds.min
+    glm::vec3 inv_cell;     ///< 1 / cell edge (1/m)
+    glm::vec3 cells;        ///< cells per axis, as floats
+
+    /// Wind (m/s) at world point (x, y, z), trilinear between cell centres;
+    /// points outside the bounds read the nearest boundary value. Scalars
+    /// out and always inlined, so flake loops vectorise.
+    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy, float& wz) const {
+        const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
+        const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
+        const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
+        const LatticePoint p = locate(centre, gx, gy, gz);
+        wx = trilinear(c[0], centre, p);
+        wy = trilinear(c[1], centre, p);
+        wz = trilinear(c[2], centre, p);
+    }
+};
+
+/// World resource: the field. Face velocities and pressure are simulation
+/// state (hashed, saved); the cell-centre velocities are derived from them
+/// after every step and are what flakes sample.
+struct WindField {
+    WindFieldDef def;
+    std::uint32_t n[3] = {0, 0, 0}; ///< cells per axis
+    glm::vec3 origin{0.0f};          ///< bounds.min
+    glm::vec3 inv_cell{0.0f};        ///< 1 / cell edge per axis (1/m)
+    Lattice face[3];                 ///< lattices of u, v, w
+    Lattice centre;                  ///< lattice of pressure and cell-centre velocity
+
+    // -- state --
+    std::vector<float> velocity[3]; ///< u, v, w on their faces (m/s)
+    std::vector<float> pressure;    ///< last projection's potential (warm start)
+    glm::vec3 inflow{0.0f};         ///< the global wind of the last step (m/s)
+    std::uint32_t wait = 0;         ///< ticks until the next step
+    std::uint64_t steps = 0;        ///< solver steps taken (0: not yet initialised)
+
+    // -- derived after each step --
+    std::vector<float> at_centre[3]; ///< cell-centre velocity, ghosts included
+
+    /// What flakes read the field through (valid until the next step).
+    [[nodiscard]] WindSampler sampler() const;
+    /// Wind (m/s) at world point (x, y, z); see WindSampler::at.
+    [[nodiscard]] glm::vec3 at(float x, float y, float z) const {
+        glm::vec3 w;
+        sampler().at(x, y, z, w.x, w.y, w.z);
+        return w;
+    }
+};
+
+inline WindSampler WindField::sampler() const {
+    return {{at_centre[0].data(), at_centre[1].data(), at_centre[2].data()},
+            centre,
+            origin,
+            inv_cell,
+            {static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])}};
+}
+
+/// A still field of `def`'s size over `bounds` (def already validated); it
+/// takes the global wind at its first step.
+[[nodiscard]] WindField make_wind_field(const WindFieldDef& def, const Aabb& bounds);
+
+} // namespace snow
