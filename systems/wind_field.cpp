@@ -129,7 +129,9 @@ void advect(const WindField& f, int a, const std::vector<float>& src, std::vecto
         const std::int32_t below = c.index(0, j, k);
         // src, dst and the centre arrays are distinct: ivdep lets the reads
         // at the traced points become gathers.
+#if defined(__GNUC__) && !defined(__clang__) // Clang has no ivdep; it vectorises without
 #pragma GCC ivdep
+#endif
         for (std::int32_t i = i0; i < i1; ++i) {
             const std::int32_t lo = below + i, hi = lo + up;
             const float x = static_cast<float>(i) - sx;
