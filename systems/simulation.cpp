@@ -19,6 +19,32 @@ void throw_if(const std::string& error) {
     }
 }
 
+/// Every component T with its entity, in pool order (Simulation::save).
+template <typename T>
+void copy_components(const World& w, std::vector<std::pair<Entity, T>>& out) {
+    w.each<T>([&](Entity e, const T& c) { out.emplace_back(e, c); });
+}
+
+/// Throws unless every saved entity still has its T (Simulation::restore
+/// checks all before it changes anything).
+template <typename T>
+void require_components(const World& w, const std::vector<std::pair<Entity, T>>& saved,
+                        const char* what) {
+    for (const auto& [e, c] : saved) {
+        if (!w.has<T>(e)) {
+            throw SnowError(std::string("restore: snapshot belongs to a different scene (") +
+                            what + " missing)");
+        }
+    }
+}
+
+template <typename T>
+void put_components(World& w, const std::vector<std::pair<Entity, T>>& saved) {
+    for (const auto& [e, c] : saved) {
+        w.get<T>(e) = c;
+    }
+}
+
 bool flakes_alive(const World& w) {
     return w.resource<FlakePool>().alive > 0;
 }
@@ -328,6 +354,9 @@ std::uint64_t Simulation::state_hash() const {
         h.value(b.position);
         h.value(b.previous);
         h.value(b.radius);
+        h.value(b.velocity);
+        h.value(b.has_target);
+        h.value(b.target);
         h.value(b.segment);
         h.value(b.along);
         h.value(b.carried);
@@ -385,23 +414,16 @@ std::unique_ptr<Snapshot> Simulation::save() const {
     if (const auto* f = world_.try_resource<WindField>()) {
         s->wind_field = *f;
     }
-    world_.each<SnowSurface>(
-        [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
-    world_.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
+    copy_components(world_, s->surfaces);
+    copy_components(world_, s->bodies);
+    copy_components(world_, s->covers);
     return s;
 }
 
 void Simulation::restore(const Snapshot& s) {
-    for (const auto& [e, surf] : s.surfaces) {
-        if (!world_.has<SnowSurface>(e)) {
-            throw SnowError("restore: snapshot belongs to a different scene (surface missing)");
-        }
-    }
-    for (const auto& [e, body] : s.bodies) {
-        if (!world_.has<Body>(e)) {
-            throw SnowError("restore: snapshot belongs to a different scene (body missing)");
-        }
-    }
+    require_components(world_, s.surfaces, "surface");
+    require_components(world_, s.bodies, "body");
+    require_components(world_, s.covers, "cover");
     FlakePool& pool = world_.resource<FlakePool>();
     pool = s.flakes;
     pool.free_stack.reserve(pool.capacity()); // keep release() allocation-free
@@ -420,12 +442,9 @@ void Simulation::restore(const Snapshot& s) {
     } else {
         clear_wind_field();
     }
-    for (const auto& [e, surf] : s.surfaces) {
-        world_.get<SnowSurface>(e) = surf;
-    }
-    for (const auto& [e, body] : s.bodies) {
-        world_.get<Body>(e) = body;
-    }
+    put_components(world_, s.surfaces);
+    put_components(world_, s.bodies);
+    put_components(world_, s.covers);
 }
 
 } // namespace snow

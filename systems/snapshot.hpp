@@ -4,6 +4,7 @@
 
 #include "ecs/entity.hpp"
 #include "systems/body.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/sim_config.hpp"
@@ -27,6 +28,9 @@ struct Snapshot {
     std::optional<WindField> wind_field; ///< the whole field: state and what derives from it
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
     std::vector<std::pair<Entity, Body>> bodies;
+    /// What each cover's base was built from: without it a cover restored to
+    /// a base from before a rebuild would never rebuild again.
+    std::vector<std::pair<Entity, SnowCover>> covers;
 };
 
 } // namespace snow
