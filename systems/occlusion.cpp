@@ -220,6 +220,9 @@ bool finite3(const glm::vec3& v) {
 } // namespace
 
 void rasterise_geometry(const World& w, OcclusionMap& m) {
+    const std::size_t texels = static_cast<std::size_t>(m.width) * m.height;
+    m.top_y.assign(texels, neg_inf);
+    m.top_id.assign(texels, 0);
     Rasteriser r(m);
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) {
         if (finite3(b.box.min) && finite3(b.box.max)) {
@@ -316,9 +319,6 @@ void occlusion_system(World& w) {
     map->wind_angle = l.wind_angle;
     map->shear_x = l.shear_x;
     map->shear_z = l.shear_z;
-    const std::size_t texels = static_cast<std::size_t>(l.width) * l.height;
-    map->top_y.assign(texels, neg_inf);
-    map->top_id.assign(texels, 0);
     rasterise_geometry(w, *map);
     map->geometry_version = version;
     ++map->version;

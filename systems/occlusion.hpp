@@ -68,8 +68,8 @@ void surface_exposure(const OcclusionMap& map, const SnowSurface& s, std::vector
                       float tolerance = occlusion_tolerance);
 /// Writes the scene's geometry into `map` along its projection: per texel
 /// the highest box, sphere, mesh or declared surface top and its entity
-/// (covers are snow, not geometry). `map` must be sized and filled with
-/// -inf / 0 first.
+/// (covers are snow, not geometry). Lays the texels out anew for the map's
+/// width × height (-inf / 0 where nothing is).
 void rasterise_geometry(const World& w, OcclusionMap& map);
 /// Corners of a surface's bare top as the plane through its corner cells (what
 /// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1). False for an empty surface.

@@ -22,7 +22,6 @@ namespace snow {
 
 namespace {
 
-constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 /// Largest base level a cover keeps (as make_surface's limit); higher tops are void.
 constexpr double max_base_level = 1.0e15;
 /// Height (m) above a raised base at which its former snow reappears, so it lands again.
@@ -64,8 +63,6 @@ void target_base(const World& w, const SnowSurface& s, SnowCover& cover,
     m.texel = s.cell;
     m.width = s.nx;
     m.height = s.nz;
-    m.top_y.assign(s.cell_count(), neg_inf);
-    m.top_id.assign(s.cell_count(), 0);
     rasterise_geometry(w, m);
     std::vector<std::uint8_t> owned(s.cell_count(), 1);
     w.each<SnowSurface>([&](Entity e, const SnowSurface& t) {
