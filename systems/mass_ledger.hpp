@@ -13,7 +13,7 @@ struct MassLedger {
     std::uint64_t removed_bounds = 0;  ///< left the simulation box
     std::uint64_t removed_sphere = 0;  ///< eliminated by sphere colliders [WF §4]
     std::uint64_t removed_bare = 0;    ///< landed on geometry without a snow surface
-    std::uint64_t removed_surface = 0; ///< settled on a surface the embedder removed
+    std::uint64_t removed_surface = 0; ///< on a surface or snowball the embedder removed
     [[nodiscard]] std::uint64_t removed() const {
         return removed_bounds + removed_sphere + removed_bare + removed_surface;
     }

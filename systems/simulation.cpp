@@ -299,6 +299,9 @@ void Simulation::remove(Entity e) {
         if (const auto* s = world_.try_get<SnowSurface>(d)) {
             ledger.removed_surface += s->settled_units();
         }
+        if (const auto* b = world_.try_get<Body>(d)) {
+            ledger.removed_surface += b->carried; // a snowball goes with its snow
+        }
         world_.destroy(d);
     }
     bump_geometry();

@@ -130,6 +130,24 @@ TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
     g.run(10);
 }
 
+TEST(Body, RemovingASnowballBooksItsSnowAsRemoved) {
+    SnowyGround g;
+    BodyDef d = ball(-1.5f, 0.0f, 0.1f);
+    d.on_ground = true;
+    d.snowball = true;
+    d.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.0f, false};
+    const Entity b = g.sim.add_body(d);
+    g.run(60);
+    const std::uint64_t carried = g.sim.world().get<Body>(b).carried;
+    ASSERT_GT(carried, 0u);
+    const MassReport before = g.sim.mass();
+    g.sim.remove(b);
+    const MassReport after = g.sim.mass();
+    EXPECT_TRUE(after.balanced());
+    EXPECT_EQ(after.carried, 0u);
+    EXPECT_EQ(after.removed, before.removed + carried);
+}
+
 TEST(Body, FlakesDoNotEndInsideAMovingBody) {
     SnowyGround g;
     Emitter e;
