@@ -6,10 +6,9 @@
 
 #include "bench_scene.hpp"
 
-#include "render/camera.hpp"
 #include "render/flake_selection.hpp"
-#include "render/osmesa_context.hpp"
-#include "render/renderer.hpp"
+
+#include <snow/render.hpp>
 
 #include <cstdlib>
 #include <vector>
@@ -52,10 +51,11 @@ void render_frame(benchmark::State& state) {
     OsMesaContext context(frame_width, frame_height);
     Renderer renderer(context);
     const ViewCamera cam = yard_camera();
-    renderer.render(bw.sim->world(), cam); // compiles shaders, uploads surfaces
+    const SceneVisuals no_meshes;
+    renderer.render(bw.sim->world(), no_meshes, cam); // compiles shaders, uploads surfaces
     double flake_ms = 0.0;
     for (auto _ : state) {
-        renderer.render(bw.sim->world(), cam);
+        renderer.render(bw.sim->world(), no_meshes, cam);
         for (const PassTiming& p : renderer.timings().passes) {
             flake_ms += p.name == "flakes" ? p.cpu_ms : 0.0;
         }

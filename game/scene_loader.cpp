@@ -130,7 +130,7 @@ SceneLoadResult load_text(std::string_view text, const std::string& name, const 
         const tinygltf::Model model = parse_gltf(text, folder);
         const SceneDescription d = describe(doc, model);
         result.name = d.geometry.scene_name.empty() ? fallback_name : d.geometry.scene_name;
-        result.sim = build_scene(d, overrides);
+        result.sim = build_scene(d, overrides, result.visuals);
     } catch (const SceneError& e) {
         result.error = name + ": " + e.what();
     } catch (const std::bad_alloc&) {
@@ -140,6 +140,7 @@ SceneLoadResult load_text(std::string_view text, const std::string& name, const 
     }
     if (!result.error.empty()) {
         result.sim.reset();
+        result.visuals = {};
     }
     return result;
 }

@@ -10,10 +10,10 @@ namespace snow {
 
 namespace {
 
-/// Throws SceneError("prefix.message") when `message` (from validate()) is set.
-void check_valid(const std::string& message, const std::string& prefix) {
-    if (!message.empty()) {
-        throw SceneError(prefix + "." + message);
+/// Throws SceneError("prefix.field", problem) when `v` (from validate()) holds a problem.
+void check_valid(const Invalid& v, const std::string& prefix) {
+    if (!v.empty()) {
+        throw SceneError(prefix + "." + v.field, v.problem);
     }
 }
 
@@ -169,7 +169,7 @@ CameraDef read_camera(JsonReader r) {
     r.read("near_plane", c.near_plane);
     r.read("far_plane", c.far_plane);
     r.finish();
-    std::string e;
+    Invalid e;
     check::positive(e, r.field("fov_y_deg"), c.fov_y_deg);
     check::at_most(e, r.field("fov_y_deg"), c.fov_y_deg, 170.0);
     check::positive(e, r.field("near_plane"), c.near_plane);
@@ -180,19 +180,19 @@ CameraDef read_camera(JsonReader r) {
         check::fail(e, r.field("target"), "different from position", c.target.x);
     }
     if (!e.empty()) {
-        throw SceneError(e);
+        throw SceneError(e.field, e.problem);
     }
     return c;
 }
 
 glm::vec3 read_colour(JsonReader& r, std::string_view key, glm::vec3 colour) {
     r.read(key, colour);
-    std::string e;
+    Invalid e;
     for (int i = 0; i < 3; ++i) {
         check::non_negative(e, r.field(key) + "[" + std::to_string(i) + "]", colour[i]);
     }
     if (!e.empty()) {
-        throw SceneError(e);
+        throw SceneError(e.field, e.problem);
     }
     return colour;
 }
@@ -282,10 +282,10 @@ std::vector<LightSpec> parse_lights(const Json& doc) {
         LightSpec l;
         l.color = read_colour(r, "color", l.color);
         r.read("intensity", l.intensity);
-        std::string e;
+        Invalid e;
         check::non_negative(e, r.field("intensity"), l.intensity);
         if (!e.empty()) {
-            throw SceneError(e);
+            throw SceneError(e.field, e.problem);
         }
         lights.push_back(l);
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "game/scene_json.hpp"
+#include "render/scene_visuals.hpp"
 #include "systems/simulation.hpp"
 
 #include <cstdint>

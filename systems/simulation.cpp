@@ -1,24 +1,57 @@
 #include "systems/simulation.hpp"
 
+#include "ecs/job_pool.hpp"
 #include "ecs/state_hash.hpp"
+#include "systems/colliders.hpp"
 #include "systems/jobs.hpp"
+#include "systems/systems.hpp"
+#include "systems/units.hpp"
 #include "systems/validation.hpp"
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace snow {
 
 namespace {
 
-void throw_if(const std::string& error) {
-    if (!error.empty()) {
-        throw SnowError(error);
-    }
-}
-
 bool flakes_alive(const World& w) {
     return w.resource<FlakePool>().alive > 0;
+}
+
+/// The T of entity `e`; throws SimulationError naming `field` when `e` is
+/// stale, null or has no T (`kind` says what it should have been).
+template <typename T, typename W>
+auto& component_of(W& world, Entity e, const std::string& field, const char* kind) {
+    auto* c = world.alive(e) ? world.template try_get<T>(e) : nullptr;
+    if (c == nullptr) {
+        throw SimulationError(field, std::string("is not a living ") + kind);
+    }
+    return *c;
+}
+
+Invalid validate_box(const Aabb& box) {
+    Invalid e;
+    check::finite3(e, "box.min", box.min);
+    check::finite3(e, "box.max", box.max);
+    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
+    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
+    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
+    return e;
+}
+
+Invalid validate(const FlakeSpec& f) {
+    Invalid e;
+    check::finite3(e, "flake.position", f.position);
+    check::finite3(e, "flake.velocity", f.velocity);
+    check::positive(e, "flake.k_over_m", f.k_over_m);
+    check::non_negative(e, "flake.size", f.size);
+    if (f.mass_units < 1 || f.mass_units > max_flake_units) {
+        check::fail(e, "flake.mass_units", "in [1, " + std::to_string(max_flake_units) + "]",
+                    f.mass_units);
+    }
+    return e;
 }
 
 } // namespace
@@ -62,6 +95,14 @@ Entity Simulation::add_emitter(const Emitter& e) {
     return id;
 }
 
+void Simulation::set_emitter_rate(Entity emitter, float rate) {
+    Emitter& e = component_of<Emitter>(world_, emitter, "set_emitter_rate(emitter)", "emitter");
+    Emitter changed = e;
+    changed.rate = rate;
+    throw_if(validate(changed));
+    e = changed;
+}
+
 void Simulation::set_wind(const Wind& w) {
     throw_if(validate(w));
     world_.set_resource<Wind>(w);
@@ -73,11 +114,9 @@ void Simulation::clear_wind() {
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null() && !world_.alive(owner)) {
-        throw SnowError("surface owner is not a living entity");
+        throw SimulationError("surface owner", "is not a living entity");
     }
-    std::string error;
-    SnowSurface surface = make_surface(def, error);
-    throw_if(error);
+    SnowSurface surface = make_surface(def);
     const Entity id = world_.create();
     world_.add<SnowSurface>(id, std::move(surface));
     world_.add<SurfaceOf>(id, SurfaceOf{owner});
@@ -89,21 +128,27 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
 }
 
 Entity Simulation::add_box(const Aabb& box) {
-    std::string e;
-    check::finite3(e, "box.min", box.min);
-    check::finite3(e, "box.max", box.max);
-    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
-    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
-    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
-    throw_if(e);
+    throw_if(validate_box(box));
     const Entity id = world_.create();
     world_.add<BoxCollider>(id, BoxCollider{box});
     bump_geometry();
     return id;
 }
 
+void Simulation::move_box(Entity box_collider, const Aabb& box) {
+    BoxCollider& c = component_of<BoxCollider>(world_, box_collider, "move_box(box_collider)",
+                                               "box collider");
+    if (world_.has<SnowHolder>(box_collider)) {
+        throw SimulationError("move_box(box_collider)",
+                              "carries a snow surface, which cannot move with it");
+    }
+    throw_if(validate_box(box));
+    c.box = box;
+    bump_geometry();
+}
+
 Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
-    std::string e;
+    Invalid e;
     check::finite3(e, "sphere.center", center);
     check::positive(e, "sphere.radius", radius);
     throw_if(e);
@@ -114,7 +159,7 @@ Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
 }
 
 Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
-    std::string e;
+    Invalid e;
     if (triangles.empty() || triangles.size() % 3 != 0) {
         check::fail(e, "mesh.triangles (vertex count)", "a positive multiple of 3",
                     static_cast<double>(triangles.size()));
@@ -134,7 +179,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
 }
 
 void Simulation::set_occlusion(const OcclusionCamera& cam) {
-    std::string e;
+    Invalid e;
     if (cam.resolution < 1 || cam.resolution > 4096) {
         check::fail(e, "occlusion.resolution", "in [1, 4096]", cam.resolution);
     }
@@ -150,6 +195,10 @@ void Simulation::set_fog(const Fog& fog) {
     world_.set_resource<Fog>(fog);
 }
 
+void Simulation::clear_fog() {
+    world_.erase_resource<Fog>();
+}
+
 void Simulation::set_spectral(const SpectralSnow& s) {
     throw_if(validate(s));
     world_.set_resource<SpectralSnow>(s);
@@ -157,7 +206,7 @@ void Simulation::set_spectral(const SpectralSnow& s) {
 
 void Simulation::remove(Entity e) {
     if (!world_.alive(e)) {
-        throw SnowError("remove: stale or null entity handle");
+        throw SimulationError("remove(entity)", "is a stale or null handle");
     }
     auto& ledger = world_.resource<MassLedger>();
     // Surfaces lying on a removed solid go with it; their snow leaves the books as removed.
@@ -174,6 +223,56 @@ void Simulation::remove(Entity e) {
         world_.destroy(d);
     }
     bump_geometry();
+}
+
+std::optional<std::uint32_t> Simulation::place_flake(const FlakeSpec& flake) {
+    throw_if(validate(flake));
+    FlakePool& f = world_.resource<FlakePool>();
+    std::uint32_t slot = 0;
+    if (!f.acquire(slot)) {
+        return std::nullopt;
+    }
+    f.px[slot] = flake.position.x;
+    f.py[slot] = flake.position.y;
+    f.pz[slot] = flake.position.z;
+    f.vx[slot] = flake.velocity.x;
+    f.vy[slot] = flake.velocity.y;
+    f.vz[slot] = flake.velocity.z;
+    f.k_over_m[slot] = flake.k_over_m;
+    f.size[slot] = flake.size;
+    f.mass_units[slot] = flake.mass_units;
+    world_.resource<MassLedger>().spawned += flake.mass_units;
+    return slot;
+}
+
+void Simulation::add_settled_snow(Entity surface, std::uint32_t ix, std::uint32_t iz,
+                                  std::uint32_t units) {
+    SnowSurface& s = component_of<SnowSurface>(world_, surface, "add_settled_snow(surface)",
+                                               "snow surface");
+    Invalid e;
+    if (ix >= s.nx) {
+        check::fail(e, "add_settled_snow(ix)", "< " + std::to_string(s.nx), ix);
+    }
+    if (iz >= s.nz) {
+        check::fail(e, "add_settled_snow(iz)", "< " + std::to_string(s.nz), iz);
+    }
+    if (units == 0) {
+        check::fail(e, "add_settled_snow(units)", ">= 1", units);
+    }
+    if (e.empty() && units > max_cell_units - s.snow[s.index(ix, iz)]) {
+        check::fail(e, "add_settled_snow(units)",
+                    "at most " + std::to_string(max_cell_units - s.snow[s.index(ix, iz)]) +
+                        " (a cell may reach " + std::to_string(max_cell_units) + ")",
+                    units);
+    }
+    throw_if(e);
+    s.snow[s.index(ix, iz)] += units;
+    s.mark_dirty(ix, iz);
+    world_.resource<MassLedger>().spawned += units;
+}
+
+const SnowSurface& Simulation::surface(Entity surface) const {
+    return component_of<SnowSurface>(world_, surface, "surface(entity)", "snow surface");
 }
 
 void Simulation::set_integrator(Integrator i) {
@@ -269,7 +368,7 @@ std::unique_ptr<Snapshot> Simulation::save() const {
 void Simulation::restore(const Snapshot& s) {
     for (const auto& [e, surf] : s.surfaces) {
         if (!world_.has<SnowSurface>(e)) {
-            throw SnowError("restore: snapshot belongs to a different scene (surface missing)");
+            throw SimulationError("restore: snapshot belongs to a different scene (surface missing)");
         }
     }
     FlakePool& pool = world_.resource<FlakePool>();

@@ -4,8 +4,7 @@
 #pragma once
 
 #include "ecs/world.hpp"
-
-#include <cstdint>
+#include "systems/sim_counters.hpp"
 
 namespace snow {
 
@@ -17,15 +16,5 @@ void deposit_system(World& w);      ///< deposit.cpp: landing + rolling rules (s
 void redistribute_system(World& w); ///< redistribute.cpp: Laplacian cap (seed 002 §3)
 void spill_system(World& w);        ///< spill.cpp: edge overflow to lower surfaces
 void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map (seed 004)
-
-/// Per-run counters the systems add to (World resource; not part of the state hash).
-struct SimCounters {
-    std::uint64_t stiff_flake_ticks = 0; ///< flake-ticks where explicit Euler was unsafe
-    std::uint64_t landed = 0;            ///< flakes that became snow
-    std::uint64_t rolled = 0;            ///< of those, how many rolled (seed 003 rules 2/3)
-    std::uint64_t smoothing_iterations = 0;
-    std::uint64_t spilled_units = 0;
-    std::uint64_t occlusion_refreshes = 0;
-};
 
 } // namespace snow

@@ -2,12 +2,7 @@
 // def-struct habit): the facade and the scene loader both call these.
 #include "systems/validation.hpp"
 
-#include "systems/emitter.hpp"
-#include "systems/fog.hpp"
-#include "systems/sim_config.hpp"
-#include "systems/spectral_snow.hpp"
 #include "systems/units.hpp"
-#include "systems/wind.hpp"
 
 namespace snow {
 
@@ -17,8 +12,8 @@ bool power_of_two(std::uint32_t v) {
 }
 } // namespace
 
-std::string validate(const SimConfig& c) {
-    std::string e;
+Invalid validate(const SimConfig& c) {
+    Invalid e;
     check::positive(e, "simulation.dt", c.dt);
     check::at_most(e, "simulation.dt", c.dt, 1.0);
     check::finite3(e, "simulation.gravity", c.gravity);
@@ -49,8 +44,8 @@ std::string validate(const SimConfig& c) {
     return e;
 }
 
-std::string validate(const Emitter& m) {
-    std::string e;
+Invalid validate(const Emitter& m) {
+    Invalid e;
     check::non_negative(e, "emitter.rate", m.rate);
     check::at_most(e, "emitter.rate", m.rate, 1.0e8);
     const double min_g = unit_kg * 1000.0;
@@ -74,8 +69,8 @@ std::string validate(const Emitter& m) {
     return e;
 }
 
-std::string validate(const Wind& w) {
-    std::string e;
+Invalid validate(const Wind& w) {
+    Invalid e;
     check::finite3(e, "wind.base", w.base);
     check::finite3(e, "wind.current", w.current);
     check::finite3(e, "wind.deviation", w.deviation);
@@ -91,8 +86,8 @@ std::string validate(const Wind& w) {
     return e;
 }
 
-std::string validate(const Fog& f) {
-    std::string e;
+Invalid validate(const Fog& f) {
+    Invalid e;
     check::finite3(e, "fog.color", f.color);
     check::non_negative(e, "fog.density", f.density);
     check::positive(e, "fog.half_distance", f.half_distance);
@@ -111,8 +106,8 @@ std::string validate(const Fog& f) {
     return e;
 }
 
-std::string validate(const SpectralSnow& s) {
-    std::string e;
+Invalid validate(const SpectralSnow& s) {
+    Invalid e;
     if (!power_of_two(s.size_xy) || s.size_xy < 8 || s.size_xy > 512) {
         check::fail(e, "spectral.size_xy", "a power of two in [8, 512]", s.size_xy);
     }

@@ -1,6 +1,7 @@
 // A host engine's loop driving snow at its own frame rate: the simulation
-// ticks at a fixed dt through an accumulator, the host reads flakes and snow
-// depth each frame, adds a collider at run time and checks the mass books.
+// ticks at a fixed dt through snow::FixedStep, the host adds a collider at
+// run time, reads flakes and snow depth and checks the mass books. Only
+// <snow/snow.hpp> and snow::sim (no GL).
 #include <snow/snow.hpp>
 
 #include <algorithm>
@@ -30,19 +31,15 @@ int main() {
 
         // The host renders at 144 Hz; the simulation keeps its 60 Hz tick.
         const double frame_dt = 1.0 / 144.0;
-        double accumulator = 0.0;
+        snow::FixedStep step(config.dt);
         for (int frame = 0; frame < 144 * 8; ++frame) {
-            accumulator += frame_dt;
-            while (accumulator >= config.dt) {
-                sim.tick();
-                accumulator -= config.dt;
-            }
+            sim.run(step.advance(frame_dt));
             if (frame == 144 * 2) {
                 sim.add_sphere({0.0f, 1.0f, 0.0f}, 1.0f); // run-time collider
             }
         }
 
-        const auto& surface = sim.world().get<snow::SnowSurface>(ground_id);
+        const snow::SnowSurface& surface = sim.surface(ground_id);
         float deepest = 0.0f;
         for (std::size_t i = 0; i < surface.cell_count(); ++i) {
             deepest = std::max(deepest, surface.snow[i] * surface.unit_height);
@@ -61,7 +58,7 @@ int main() {
             std::fprintf(stderr, "embed_snow: unexpected mass report\n");
             return 1;
         }
-    } catch (const snow::SnowError& e) {
+    } catch (const snow::Error& e) {
         std::fprintf(stderr, "embed_snow: %s\n", e.what());
         return 2;
     }

@@ -1,6 +1,7 @@
 // Scene loading: the project's scenes load with the declared roles, and every
 // kind of bad input gives one error naming the file and the field, no Simulation.
 #include "game/scene_loader.hpp"
+#include "systems/colliders.hpp"
 
 #include <gtest/gtest.h>
 
@@ -154,14 +155,14 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_EQ(w.count<SphereCollider>(), 3u); // snowman
     EXPECT_EQ(w.count<MeshCollider>(), 2u);   // roof sides
     EXPECT_EQ(w.count<SnowSurface>(), 5u);    // ground, 2 roof sides, porch, garage
-    EXPECT_EQ(w.count<MeshRenderable>(), 12u);
-    EXPECT_EQ(w.count<PointLight>(), 3u);
+    EXPECT_EQ(r.visuals.meshes.size(), 12u);
+    EXPECT_EQ(r.visuals.lights.size(), 3u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     EXPECT_TRUE(w.has_resource<Wind>());
     EXPECT_TRUE(w.has_resource<Fog>());
     EXPECT_TRUE(w.has_resource<OcclusionCamera>());
     EXPECT_FALSE(w.has_resource<SpectralSnow>());
-    EXPECT_TRUE(w.has_resource<CameraDef>());
+    EXPECT_EQ(r.visuals.camera.position, glm::vec3(1.0f, 6.0f, 17.0f)); // the scene's own, not the default
 
     const SimConfig& c = r.sim->config();
     EXPECT_FLOAT_EQ(c.dt, 1.0f / 60.0f);
@@ -216,11 +217,11 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
 
     // Seed 002 §5: white above the house, blue nearer the camera, yellow on the right.
     int white = 0, blue = 0, yellow = 0;
-    w.each<PointLight>([&](Entity, const PointLight& l) {
+    for (const PointLight& l : r.visuals.lights) {
         white += l.color == glm::vec3(1.0f) && l.position.y > 8.0f;
         blue += l.color.b > l.color.r && l.position.z > 5.0f;
         yellow += l.color.r > l.color.b && l.position.x > 8.0f;
-    });
+    }
     EXPECT_EQ(white + blue + yellow, 3);
     EXPECT_EQ(white, 1);
     EXPECT_EQ(blue, 1);
@@ -230,7 +231,7 @@ TEST(SceneLoader, MeshRenderablesAreWorldSpaceWithUnitNormalsAndMaterialColour) 
     const SceneLoadResult r = load_scene_file(asset_path("village.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
     int garages = 0;
-    r.sim->world().each<MeshRenderable>([&](Entity, const MeshRenderable& m) {
+    for (const MeshRenderable& m : r.visuals.meshes) {
         ASSERT_EQ(m.positions.size(), m.normals.size()) << m.name;
         ASSERT_EQ(m.indices.size() % 3, 0u) << m.name;
         for (const std::uint32_t i : m.indices) {
@@ -248,7 +249,7 @@ TEST(SceneLoader, MeshRenderablesAreWorldSpaceWithUnitNormalsAndMaterialColour) 
             }
             EXPECT_NEAR(top, 2.5f, 1e-5f);
         }
-    });
+    }
     EXPECT_EQ(garages, 1);
 }
 
@@ -261,7 +262,7 @@ TEST(SceneLoader, MinimalSceneCreatesOnlyWhatItDeclares) {
     EXPECT_FALSE(w.has_resource<OcclusionCamera>());
     EXPECT_FALSE(w.has_resource<SpectralSnow>());
     EXPECT_EQ(w.count<BoxCollider>() + w.count<SphereCollider>() + w.count<MeshCollider>(), 0u);
-    EXPECT_EQ(w.count<PointLight>(), 0u);
+    EXPECT_TRUE(r.visuals.lights.empty());
     EXPECT_EQ(w.count<SnowSurface>(), 1u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     // Default bounds: the ground's (10 × 0.2 × 10 m) grown by the margin and headroom.
@@ -501,13 +502,14 @@ TEST(SceneLoaderErrors, MirroredNodeKeepsOutwardWinding) {
                                       "\"mesh\": 0, \"scale\": [-1, 1, 1]");
     const SceneLoadResult r = load_text(text);
     ASSERT_NE(r.sim, nullptr) << r.error;
-    r.sim->world().each<MeshRenderable>([](Entity, const MeshRenderable& m) {
+    ASSERT_EQ(r.visuals.meshes.size(), 1u);
+    for (const MeshRenderable& m : r.visuals.meshes) {
         // The quad faces up (+y); after mirroring in x it must still face up.
         const glm::vec3 a = m.positions[m.indices[0]], b = m.positions[m.indices[1]],
                         c = m.positions[m.indices[2]];
         EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f);
         EXPECT_GT(m.normals[0].y, 0.99f); // computed (the file has no NORMAL)
-    });
+    }
 }
 
 TEST(SceneLoaderErrors, FileAccessStaysInsideTheSceneFolder) {

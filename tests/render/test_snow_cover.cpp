@@ -21,7 +21,7 @@ float saturation(const glm::vec3& c) {
 TEST(RenderSnowCover, RoofIsWhiteWhileTheMeshUnderItStaysDark) {
     FixtureScene scene;
     build_fixture(scene);
-    const Image image = render_image(scene.world, scene.camera);
+    const Image image = render_image(scene.world, scene.visuals, scene.camera);
     const glm::vec3 roof = mean_color(image, to_pixel(scene.camera, {2.0f, 2.15f, 0.0f}), 2);
     const glm::vec3 crate = mean_color(image, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
     EXPECT_GT(brightness(roof), 170.0f);
@@ -31,7 +31,7 @@ TEST(RenderSnowCover, RoofIsWhiteWhileTheMeshUnderItStaysDark) {
 
     // Without the sky camera nothing is occluded: the same crate top turns white.
     scene.world.erase_resource<OcclusionMap>();
-    const Image exposed = render_image(scene.world, scene.camera);
+    const Image exposed = render_image(scene.world, scene.visuals, scene.camera);
     const glm::vec3 crate_exposed =
         mean_color(exposed, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
     EXPECT_GT(brightness(crate_exposed), brightness(crate) + 40.0f);
@@ -42,8 +42,8 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
     build_fixture(scene);
     RenderSettings bare;
     bare.mesh_snow = 0.0f;
-    const Image with_snow = render_image(scene.world, scene.camera);
-    const Image without = render_image(scene.world, scene.camera, bare);
+    const Image with_snow = render_image(scene.world, scene.visuals, scene.camera);
+    const Image without = render_image(scene.world, scene.visuals, scene.camera, bare);
     // The house's front wall faces +z: dot(N, up) = 0, so snow never shows (seed 004 step 3).
     const glm::ivec2 wall = to_pixel(scene.camera, {-2.5f, 1.0f, 1.0f});
     EXPECT_EQ(mean_color(with_snow, wall, 2), mean_color(without, wall, 2));
@@ -99,10 +99,10 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 2u);
-    EXPECT_EQ(renderer.timings().meshes_uploaded, scene.world.count<MeshRenderable>());
-    renderer.render(scene.world, scene.camera);
+    EXPECT_EQ(renderer.timings().meshes_uploaded, scene.visuals.meshes.size());
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
     EXPECT_EQ(renderer.timings().meshes_uploaded, 0u);
     const Image before = renderer.read_pixels();
@@ -111,13 +111,13 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     for (std::uint32_t& cell : roof.snow) {
         cell += 100; // 0.2 m more snow everywhere on the roof
     }
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
     const Image after = renderer.read_pixels();
     EXPECT_GT(compare_images(before, after).pixels_over, 100u) << "the taller roof snow shows";
 
     scene.world.destroy(scene.house_roof);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
 }
 

@@ -246,7 +246,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> builtin = {"sky", "snow_surfaces", "meshes", "flakes"};
     EXPECT_EQ(renderer.pass_names(), builtin);
     for (const std::string& v : renderer.compiled_variants()) {
@@ -258,7 +258,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     Fog fog;
     fog.puffs.push_back(FogPuff{{0.0f, 1.0f, 0.0f}, 1.0f, 0.5f, {}, 0.0f});
     scene.world.set_resource<Fog>(fog);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> effects = {"sky",           "snow_surfaces", "meshes",
                                               "spectral_snow", "flakes",        "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
@@ -276,7 +276,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     // The effects removed again: their passes stay in the list but skip.
     scene.world.erase_resource<SpectralSnow>();
     scene.world.erase_resource<Fog>();
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     for (const PassTiming& p : renderer.timings().passes) {
         EXPECT_EQ(p.ran, p.name != "spectral_snow" && p.name != "fog_puffs" && p.name != "sky")
             << p.name;
@@ -308,8 +308,8 @@ TEST(RenderSpectral, LayerCoversTheFarFieldAndLeavesNearSurfacesAlone) {
     FixtureScene snowy;
     build_fixture(snowy);
     add_layer(snowy, 10.0f);
-    const Image a = render_image(plain.world, plain.camera);
-    const Image b = render_image(snowy.world, snowy.camera);
+    const Image a = render_image(plain.world, plain.visuals, plain.camera);
+    const Image b = render_image(snowy.world, snowy.visuals, snowy.camera);
     // Near surfaces (the crate and the house, under 10 m away) stay as they were.
     for (const glm::vec3& p : {glm::vec3(2.0f, 0.35f, 0.6f), glm::vec3(-2.5f, 1.0f, 1.0f)}) {
         const glm::vec3 d = glm::abs(mean_color(a, to_pixel(plain.camera, p), 2) -
@@ -340,9 +340,9 @@ TEST(RenderSpectral, AnimatesWithTheSimulationClock) {
     add_layer(scene, 10.0f);
     scene.world.set_resource<SimConfig>();
     scene.world.set_resource<SimClock>();
-    const Image t0 = render_image(scene.world, scene.camera);
+    const Image t0 = render_image(scene.world, scene.visuals, scene.camera);
     scene.world.resource<SimClock>().tick = 30;
-    const Image t1 = render_image(scene.world, scene.camera);
+    const Image t1 = render_image(scene.world, scene.visuals, scene.camera);
     EXPECT_GT(compare_images(t0, t1).pixels_over, 100u);
 }
 
@@ -350,7 +350,7 @@ TEST(RenderGolden, FixtureWithSpectralSnow) {
     FixtureScene scene;
     build_fixture(scene);
     add_layer(scene, 10.0f);
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.camera), "scene_spectral"));
+    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_spectral"));
 }
 
 TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
@@ -377,7 +377,7 @@ TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
     Renderer renderer(*context, settings);
     std::vector<double> pass_ms, frame_ms;
     for (int i = 0; i < 16; ++i) {
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         if (i == 0) {
             continue; // the first frame builds the volume
         }

@@ -1,0 +1,11 @@
+/// @file snow.hpp
+/// @brief The simulation API (target snow::sim, no GL): create a Simulation
+/// from code (or from a glTF file with <snow/scene.hpp>), change it only
+/// through its validated calls, step it at a fixed dt (FixedStep turns host
+/// frames into ticks), read flakes, surfaces, the state hash and the mass
+/// report. Everything it throws is a snow::Error. See docs/embedding.md.
+#pragma once
+
+#include "systems/fixed_step.hpp"
+#include "systems/simulation.hpp"
+#include "systems/units.hpp"
