@@ -53,7 +53,7 @@ class Game {
     SceneVisuals visuals_;
     FixedStep step_{1.0 / 60.0}; ///< replaced by one of the scene's dt in load()
     std::unique_ptr<Snapshot> start_;
-    std::optional<Fog> fog_; ///< the scene's fog, kept while toggled off
+    std::optional<Fog> fog_;                ///< the scene's fog, kept while toggled off
     std::optional<FrameRecorder> recorder_; ///< headless: where frames are written
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<Renderer> renderer_;

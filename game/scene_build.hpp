@@ -37,8 +37,7 @@ struct SceneDescription {
 /// Creates the simulation and fills `visuals` (meshes, lights, camera, sky).
 /// Facade errors (SimulationError) come back as SceneError prefixed with the
 /// JSON path they belong to. Throws SceneError.
-[[nodiscard]] std::unique_ptr<Simulation> build_scene(const SceneDescription& d,
-                                                      const SceneOverrides& overrides,
-                                                      SceneVisuals& visuals);
+[[nodiscard]] std::unique_ptr<Simulation>
+build_scene(const SceneDescription& d, const SceneOverrides& overrides, SceneVisuals& visuals);
 
 } // namespace snow

@@ -235,7 +235,7 @@ void Renderer::render(const World& world, const SceneVisuals& visuals, const Vie
     t.passes[0].ran = true;
     t.passes[0].cpu_ms = ms_since(frame_start);
 
-    FrameContext frame{camera,     visuals,    view_proj,        viewport,      m.settings,
+    FrameContext frame{camera,     visuals,          view_proj,     viewport,   m.settings,
                        m.programs, fog_defines(fog), has_occlusion, m.software, t};
     for (std::size_t i = 0; i < m.passes.size(); ++i) {
         RenderPass& pass = *m.passes[i];

@@ -5,7 +5,6 @@
 #include "systems/colliders.hpp"
 #include "systems/jobs.hpp"
 #include "systems/systems.hpp"
-#include "systems/units.hpp"
 #include "systems/validation.hpp"
 
 #include <cmath>
@@ -29,29 +28,6 @@ auto& component_of(W& world, Entity e, const std::string& field, const char* kin
         throw SimulationError(field, std::string("is not a living ") + kind);
     }
     return *c;
-}
-
-Invalid validate_box(const Aabb& box) {
-    Invalid e;
-    check::finite3(e, "box.min", box.min);
-    check::finite3(e, "box.max", box.max);
-    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
-    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
-    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
-    return e;
-}
-
-Invalid validate(const FlakeSpec& f) {
-    Invalid e;
-    check::finite3(e, "flake.position", f.position);
-    check::finite3(e, "flake.velocity", f.velocity);
-    check::positive(e, "flake.k_over_m", f.k_over_m);
-    check::non_negative(e, "flake.size", f.size);
-    if (f.mass_units < 1 || f.mass_units > max_flake_units) {
-        check::fail(e, "flake.mass_units", "in [1, " + std::to_string(max_flake_units) + "]",
-                    f.mass_units);
-    }
-    return e;
 }
 
 } // namespace
@@ -114,7 +90,7 @@ void Simulation::clear_wind() {
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null() && !world_.alive(owner)) {
-        throw SimulationError("surface owner", "is not a living entity");
+        throw SimulationError("add_surface(owner)", "is not a living entity");
     }
     SnowSurface surface = make_surface(def);
     const Entity id = world_.create();
@@ -128,7 +104,7 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
 }
 
 Entity Simulation::add_box(const Aabb& box) {
-    throw_if(validate_box(box));
+    throw_if(validate(box));
     const Entity id = world_.create();
     world_.add<BoxCollider>(id, BoxCollider{box});
     bump_geometry();
@@ -136,13 +112,13 @@ Entity Simulation::add_box(const Aabb& box) {
 }
 
 void Simulation::move_box(Entity box_collider, const Aabb& box) {
-    BoxCollider& c = component_of<BoxCollider>(world_, box_collider, "move_box(box_collider)",
-                                               "box collider");
+    BoxCollider& c =
+        component_of<BoxCollider>(world_, box_collider, "move_box(box_collider)", "box collider");
     if (world_.has<SnowHolder>(box_collider)) {
         throw SimulationError("move_box(box_collider)",
                               "carries a snow surface, which cannot move with it");
     }
-    throw_if(validate_box(box));
+    throw_if(validate(box));
     c.box = box;
     bump_geometry();
 }
@@ -247,8 +223,8 @@ std::optional<std::uint32_t> Simulation::place_flake(const FlakeSpec& flake) {
 
 void Simulation::add_settled_snow(Entity surface, std::uint32_t ix, std::uint32_t iz,
                                   std::uint32_t units) {
-    SnowSurface& s = component_of<SnowSurface>(world_, surface, "add_settled_snow(surface)",
-                                               "snow surface");
+    SnowSurface& s =
+        component_of<SnowSurface>(world_, surface, "add_settled_snow(surface)", "snow surface");
     Invalid e;
     if (ix >= s.nx) {
         check::fail(e, "add_settled_snow(ix)", "< " + std::to_string(s.nx), ix);
@@ -368,7 +344,8 @@ std::unique_ptr<Snapshot> Simulation::save() const {
 void Simulation::restore(const Snapshot& s) {
     for (const auto& [e, surf] : s.surfaces) {
         if (!world_.has<SnowSurface>(e)) {
-            throw SimulationError("restore: snapshot belongs to a different scene (surface missing)");
+            throw SimulationError(
+                "restore: snapshot belongs to a different scene (surface missing)");
         }
     }
     FlakePool& pool = world_.resource<FlakePool>();

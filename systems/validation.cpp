@@ -69,6 +69,29 @@ Invalid validate(const Emitter& m) {
     return e;
 }
 
+Invalid validate(const Aabb& box) {
+    Invalid e;
+    check::finite3(e, "box.min", box.min);
+    check::finite3(e, "box.max", box.max);
+    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
+    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
+    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
+    return e;
+}
+
+Invalid validate(const FlakeSpec& f) {
+    Invalid e;
+    check::finite3(e, "flake.position", f.position);
+    check::finite3(e, "flake.velocity", f.velocity);
+    check::positive(e, "flake.k_over_m", f.k_over_m);
+    check::non_negative(e, "flake.size", f.size);
+    if (f.mass_units < 1 || f.mass_units > max_flake_units) {
+        check::fail(e, "flake.mass_units", "in [1, " + std::to_string(max_flake_units) + "]",
+                    f.mass_units);
+    }
+    return e;
+}
+
 Invalid validate(const Wind& w) {
     Invalid e;
     check::finite3(e, "wind.base", w.base);

@@ -5,7 +5,9 @@
 #pragma once
 
 #include "systems/emitter.hpp"
+#include "systems/flake_pool.hpp"
 #include "systems/fog.hpp"
+#include "systems/geometry.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/simulation_error.hpp"
 #include "systems/spectral_snow.hpp"
@@ -37,6 +39,9 @@ inline void throw_if(const Invalid& v) {
 
 [[nodiscard]] Invalid validate(const SimConfig& c);
 [[nodiscard]] Invalid validate(const Emitter& e);
+/// A box collider's extent (fields "box.min", "box.max").
+[[nodiscard]] Invalid validate(const Aabb& box);
+[[nodiscard]] Invalid validate(const FlakeSpec& f);
 [[nodiscard]] Invalid validate(const Wind& w);
 [[nodiscard]] Invalid validate(const Fog& f);
 [[nodiscard]] Invalid validate(const SpectralSnow& s);

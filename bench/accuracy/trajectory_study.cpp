@@ -104,7 +104,7 @@ double measure_cost(const TrajectoryOptions& o, Integrator integrator, float dt,
         }
         best = std::min(best, thread_cpu_seconds() - t0);
     }
-    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * f.alive);
+    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * sim->flakes().alive);
 }
 
 } // namespace

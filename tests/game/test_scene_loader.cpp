@@ -162,7 +162,8 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_TRUE(w.has_resource<Fog>());
     EXPECT_TRUE(w.has_resource<OcclusionCamera>());
     EXPECT_FALSE(w.has_resource<SpectralSnow>());
-    EXPECT_EQ(r.visuals.camera.position, glm::vec3(1.0f, 6.0f, 17.0f)); // the scene's own, not the default
+    EXPECT_EQ(r.visuals.camera.position,
+              glm::vec3(1.0f, 6.0f, 17.0f)); // the scene's own, not the default
 
     const SimConfig& c = r.sim->config();
     EXPECT_FLOAT_EQ(c.dt, 1.0f / 60.0f);

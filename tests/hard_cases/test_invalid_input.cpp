@@ -114,8 +114,10 @@ std::vector<Field> api_fields() {
          [](Simulation& s, float v) {
              s.move_box(free_box(s), {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, v}});
          }},
-        {"flake.position.x", R::finite, flake_with([](FlakeSpec& f, float v) { f.position.x = v; })},
-        {"flake.velocity.y", R::finite, flake_with([](FlakeSpec& f, float v) { f.velocity.y = v; })},
+        {"flake.position.x", R::finite,
+         flake_with([](FlakeSpec& f, float v) { f.position.x = v; })},
+        {"flake.velocity.y", R::finite,
+         flake_with([](FlakeSpec& f, float v) { f.velocity.y = v; })},
         {"flake.k_over_m", R::positive, flake_with([](FlakeSpec& f, float v) { f.k_over_m = v; })},
         {"flake.size", R::non_negative, flake_with([](FlakeSpec& f, float v) { f.size = v; })},
         {"emitter.rate", R::non_negative, with<Emitter>([](Emitter& e, float v) { e.rate = v; })},
@@ -261,8 +263,7 @@ TEST(HardCaseInvalidInput, ApiRejectsEveryBadNumberAndLeavesTheStateAlone) {
     EXPECT_THROW((void)sim->surface(first_with<Emitter>(*sim)), SimulationError);
     // A box carrying snow cannot move; hand-added snow must fit its surface and cell.
     const Entity garage = first_with<SnowHolder>(*sim);
-    EXPECT_THROW(sim->move_box(garage, {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}}),
-                 SimulationError);
+    EXPECT_THROW(sim->move_box(garage, {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}}), SimulationError);
     const Entity ground = first_with<SnowSurface>(*sim);
     const SnowSurface& g = sim->surface(ground);
     EXPECT_THROW(sim->add_settled_snow(ground, g.nx, 0, 1), SimulationError);

@@ -214,7 +214,8 @@ TEST(RenderFogPuffs, OpaqueSurfacesCutTheRayShort) {
         box_mesh({{-3.0f, -2.0f, 0.0f}, {3.0f, 4.0f, 0.1f}}, glm::vec3(0.0f)));
     const glm::ivec2 px = to_pixel(open.camera, {0.0f, 1.0f, 0.0f});
     const float full = render_image(open.world, open.visuals, open.camera).pixel(px.x, px.y)[0];
-    const float half = render_image(walled.world, walled.visuals, walled.camera).pixel(px.x, px.y)[0];
+    const float half =
+        render_image(walled.world, walled.visuals, walled.camera).pixel(px.x, px.y)[0];
     // Through the whole puff 0.6·√(2π) ≈ 1.5 halvings; to the wall (z = 0.1) just under half.
     const double to_wall = puff_optical_depth(puffs[0], {0.0, 1.0, 8.0}, {0.0, 1.0, 0.1});
     EXPECT_NEAR(half, 255.0 * (1.0 - std::pow(0.5, to_wall)), 3.0);
@@ -237,7 +238,8 @@ TEST(RenderGolden, FixtureWithLayeredFogAndPuffs) {
     fog.layer_density = 0.2f;
     fog.puffs = fixture_puffs();
     scene.world.set_resource<Fog>(fog);
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_fog_puffs"));
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_fog_puffs"));
 }
 
 TEST(RenderPerf, DISABLED_FogPuffPass) {

@@ -350,7 +350,8 @@ TEST(RenderGolden, FixtureWithSpectralSnow) {
     FixtureScene scene;
     build_fixture(scene);
     add_layer(scene, 10.0f);
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_spectral"));
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_spectral"));
 }
 
 TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
