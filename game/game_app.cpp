@@ -51,7 +51,7 @@ class Game {
     std::size_t quality_;
     std::unique_ptr<Simulation> sim_;
     SceneVisuals visuals_;
-    FixedStep step_{1.0 / 60.0}; ///< replaced by one of the scene's dt in load()
+    FixedStep step_{1.0 / 60.0}; ///< window mode; load() sets it to the scene's dt
     std::unique_ptr<Snapshot> start_;
     std::optional<Fog> fog_;                ///< the scene's fog, kept while toggled off
     std::optional<FrameRecorder> recorder_; ///< headless: where frames are written
