@@ -17,14 +17,14 @@ set(SNOW_SIM_HEADERS
     include/snow/snow.hpp
     ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
     ecs/world.hpp
-    systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp systems/fog.hpp
-    systems/geometry.hpp systems/mass_ledger.hpp systems/occlusion.hpp systems/sim_config.hpp
-    systems/sim_counters.hpp systems/simulation.hpp systems/simulation_error.hpp
-    systems/snapshot.hpp systems/snow_surface.hpp systems/spectral_snow.hpp systems/units.hpp
-    systems/wind.hpp)
+    systems/body.hpp systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp
+    systems/fog.hpp systems/geometry.hpp systems/mass_ledger.hpp systems/occlusion.hpp
+    systems/sim_config.hpp systems/sim_counters.hpp systems/simulation.hpp
+    systems/simulation_error.hpp systems/snapshot.hpp systems/snow_cover.hpp
+    systems/snow_surface.hpp systems/spectral_snow.hpp systems/units.hpp systems/wind.hpp)
 set(SNOW_SCENE_HEADERS
     include/snow/scene.hpp
-    game/scene_loader.hpp render/scene_visuals.hpp)
+    game/scene/scene_loader.hpp render/scene_visuals.hpp)
 set(SNOW_RENDER_HEADERS
     include/snow/render.hpp
     render/camera.hpp render/frame_timings.hpp render/gl_context.hpp render/glfw_context.hpp

@@ -1,7 +1,8 @@
-// collide: flakes against the bounds, spheres, boxes and mesh tops (seed 002
-// §4; meshes through the sky map of seed 004). Detection runs in parallel over
+// collide: flakes against the bounds, spheres, boxes and mesh tops ([WF §4];
+// meshes through the sky map of [SKY]). Detection runs in parallel over
 // fixed chunks of slots; removals are applied afterwards in slot order, so the
 // free stack and the state hash do not depend on the thread count.
+#include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/integrator.hpp"
@@ -9,9 +10,12 @@
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -19,6 +23,8 @@
 #include <cstring>
 #include <limits>
 #include <vector>
+
+#include <glm/common.hpp>
 
 namespace snow {
 
@@ -42,6 +48,7 @@ struct CollideScratch {
     std::vector<Removal> reasons;
     std::vector<std::uint32_t> counts;
     std::vector<const SnowSurface*> surfaces;
+    std::vector<const SnowSurface*> covers; ///< this tick's cover surfaces
     std::vector<float> mesh_block_top;
     std::uint32_t blocks_x = 0;
     const OcclusionMap* blocks_map = nullptr;
@@ -56,6 +63,12 @@ struct Context {
     const float* mesh_block_top = nullptr;
     std::uint32_t blocks_x = 0;
     const SnowSurface* const* surfaces = nullptr;
+    const SnowSurface* const* covers = nullptr;
+    std::uint32_t cover_count = 0;
+    const Body* bodies = nullptr;
+    std::uint32_t body_count = 0;
+    Aabb body_box{glm::vec3{std::numeric_limits<float>::infinity()},
+                  glm::vec3{-std::numeric_limits<float>::infinity()}}; ///< where bodies swept this tick
     Aabb bounds;
     float dt = 0.0f;
     Integrator integrator = Integrator::explicit_euler;
@@ -71,7 +84,11 @@ struct Context {
 /// The flake may leave the 3×3 cells around it this tick, so the grid's
 /// reach tables cannot clear it (NaN counts as fast).
 bool is_fast(const Context& c, float vx, float vy, float vz) {
-    return !(std::abs(vx) < c.fast_x) | !(std::abs(vz) < c.fast_z) | !(std::abs(vy) < c.fast_y);
+    // All three tests, no short cut: the caller's loop stays branch-free.
+    const bool slow_x = std::abs(vx) < c.fast_x;
+    const bool slow_y = std::abs(vy) < c.fast_y;
+    const bool slow_z = std::abs(vz) < c.fast_z;
+    return !(slow_x & slow_y & slow_z);
 }
 
 /// Result of the per-flake tests for a flake that is still inside the bounds.
@@ -116,9 +133,10 @@ struct BoxContact {
 /// False when the segment never reaches the interior or is leaving it.
 bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1, BoxContact& k) {
     // The path's bounding box misses the open box: the usual case, no divisions.
-    if ((std::max(p0.x, p1.x) <= b.min.x) | (std::min(p0.x, p1.x) >= b.max.x) |
-        (std::max(p0.y, p1.y) <= b.min.y) | (std::min(p0.y, p1.y) >= b.max.y) |
-        (std::max(p0.z, p1.z) <= b.min.z) | (std::min(p0.z, p1.z) >= b.max.z)) {
+    const glm::vec3 lo = glm::min(p0, p1);
+    const glm::vec3 hi = glm::max(p0, p1);
+    if ((hi.x <= b.min.x) | (lo.x >= b.max.x) | (hi.y <= b.min.y) | (lo.y >= b.max.y) |
+        (hi.z <= b.min.z) | (lo.z >= b.max.z)) {
         return false;
     }
     if (strictly_inside(b, p0)) {
@@ -189,13 +207,35 @@ bool covered(const Context& c, std::uint32_t begin, std::uint32_t end, float x, 
     return false;
 }
 
+/// A flake met geometry at `at`. When that is the top of a cover's column
+/// (within the slope a cell spans), it is placed on the cover's snow top for
+/// the deposit system and true is returned.
+bool cover_catches(const Context& c, const glm::vec3& at, glm::vec3& p, glm::vec3& v) {
+    for (std::uint32_t k = 0; k < c.cover_count; ++k) {
+        const SnowSurface& s = *c.covers[k];
+        std::uint32_t ix = 0, iz = 0;
+        if (!s.cell_at(at.x, at.z, ix, iz)) {
+            continue;
+        }
+        const std::size_t i = s.index(ix, iz);
+        if (!s.is_void(i) && at.y >= s.height(s.base_level[i]) - 2.0f * s.cell) {
+            p = {at.x, s.top_y(i), at.z};
+            v = glm::vec3{0.0f};
+            return true;
+        }
+    }
+    return false;
+}
+
 /// A flake reached the top of a solid at `at`: it waits there for the
-/// deposit system when a surface of the solid covers the spot, otherwise it
-/// lands on bare geometry and leaves the books (it would rest there forever).
+/// deposit system when a surface of the solid or a cover covers the spot,
+/// otherwise it lands on bare geometry and leaves the books (it would rest
+/// there forever).
 Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t surf_end,
                     const glm::vec3& at, glm::vec3& p, glm::vec3& v, bool& moved) {
     if (!covered(c, surf_begin, surf_end, at.x, at.z)) {
-        return Outcome::bare;
+        moved = cover_catches(c, at, p, v);
+        return moved ? Outcome::keep : Outcome::bare;
     }
     p = at;
     v.y = 0.0f;
@@ -207,6 +247,7 @@ Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t su
 struct FirstContact {
     std::uint32_t item = 0; ///< as in ColliderGrid::cell_items
     BoxContact box;         ///< when the item is a box
+    float t = 0.0f;         ///< where along the path
     bool found = false;
 };
 
@@ -233,7 +274,7 @@ FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm
                 t = (item & ColliderGrid::sphere_tag) != 0 ? t : k.t;
                 if (hit && t < best) { // strict: the first listed wins a tie
                     best = t;
-                    first = FirstContact{item, k, true};
+                    first = FirstContact{item, k, t, true};
                 }
             }
         }
@@ -257,7 +298,10 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             break;
         }
         if ((f.item & ColliderGrid::sphere_tag) != 0) {
-            return Outcome::sphere; // seed 002 §4: the sphere eliminates it
+            // [WF §4]: the sphere eliminates it, unless a cover holds snow there.
+            done = cover_catches(c, p0 + (p - p0) * f.t, p, v);
+            moved = moved || done;
+            return done ? Outcome::keep : Outcome::sphere;
         }
         const GridBox& b = g.boxes[f.item];
         const BoxContact& k = f.box;
@@ -265,7 +309,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             done = true;
             return land_on_top(c, b.surf_begin, b.surf_end, k.at, p, v, moved);
         }
-        // Seed 002 §4: to the nearest point outside (on the face); the motion
+        // [WF §4]: to the nearest point outside (on the face); the motion
         // along the face is kept, so the flake slides and drifts build at
         // windward bases.
         p[k.axis] = k.at[k.axis];
@@ -275,7 +319,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
     return Outcome::keep;
 }
 
-/// A mesh top from the sky map (seed 004): only a flake that crossed the
+/// A mesh top from the sky map [SKY]: only a flake that crossed the
 /// top from above this tick lands; one that came in sideways is left alone.
 Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v, bool& moved) {
     std::uint32_t ti = 0, tj = 0;
@@ -297,6 +341,57 @@ Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3&
     return land_on_top(c, m->surf_begin, m->surf_end, glm::vec3{p.x, top, p.z}, p, v, moved);
 }
 
+/// Where relative path a→e (in a body's frame, centre at the origin) meets
+/// the body: the point on its surface the flake is put on.
+bool body_contact(const Body& b, const glm::vec3& a, const glm::vec3& e, glm::vec3& out) {
+    switch (b.shape) {
+    case BodyShape::box: {
+        BoxContact k;
+        if (!box_contact(Aabb{-b.half_extents, b.half_extents}, a, e, k)) {
+            return false;
+        }
+        out = k.at;
+        return true;
+    }
+    case BodyShape::capsule: {
+        const glm::vec3 core{0.0f, std::clamp(e.y, -b.half_height, b.half_height), 0.0f};
+        const glm::vec3 d = e - core;
+        const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        if (!(len < b.radius)) {
+            return false;
+        }
+        out = core + (len > 0.0f ? d / len : glm::vec3{1.0f, 0.0f, 0.0f}) * b.radius;
+        return true;
+    }
+    case BodyShape::sphere:
+        break;
+    }
+    float t = 0.0f;
+    if (!sphere_entry(a, e, GridSphere{glm::vec3{0.0f}, b.radius}, t)) {
+        return false;
+    }
+    const glm::vec3 q = a + (e - a) * t;
+    const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    out = (len > 0.0f ? q / len : glm::vec3{0.0f, 1.0f, 0.0f}) * b.radius;
+    return true;
+}
+
+/// Moving bodies, each tested in its own frame (its motion this tick taken
+/// out), so a body sweeping over a resting flake meets it too. A flake that
+/// enters is put on the body's surface and moves with it.
+void push_out_of_bodies(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v,
+                        bool& moved) {
+    for (std::uint32_t k = 0; k < c.body_count; ++k) {
+        const Body& b = c.bodies[k];
+        glm::vec3 out{0.0f};
+        if (body_contact(b, p0 - b.previous, p - b.position, out)) {
+            p = b.position + out;
+            v = (b.position - b.previous) / c.dt;
+            moved = true;
+        }
+    }
+}
+
 /// Every collider test for one flake that may meet something (finite position).
 Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
@@ -315,6 +410,9 @@ Outcome resolve(const Context& c, std::size_t i) {
         if (!(std::min(p.y, p0.y) > mesh_reach) || is_fast(c, v.x, v.y, v.z)) {
             out = mesh_top(c, p0, p, v, moved);
         }
+    }
+    if (out == Outcome::keep && c.body_box.contains(p)) {
+        push_out_of_bodies(c, p0, p, v, moved);
     }
     if (out == Outcome::keep && moved) { // untouched flakes leave their cache lines clean
         f.px[i] = p.x;
@@ -345,14 +443,17 @@ void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __
     const float dt = c.dt;
     for (std::size_t i = b; i < e; ++i) {
         const float x = px[i], y = py[i], z = pz[i];
-        // Seed 002 §4: flakes outside the world's bounds are deactivated (NaN too).
+        // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
         const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];
         const float y0 = y - vy[i] * dt;
         const bool low = !((y < y0 ? y : y0) > top);
         const bool fast = is_fast(c, vx[i], vy[i], vz[i]);
-        flags[i - b] = (mass[i] != 0) & (!inside | low | fast) ? 1 : 0;
+        const Aabb& near = c.body_box;
+        const bool body = (x >= near.min.x) & (x <= near.max.x) & (y >= near.min.y) &
+                          (y <= near.max.y) & (z >= near.min.z) & (z <= near.max.z);
+        flags[i - b] = (mass[i] != 0) & (!inside | low | fast | body) ? 1 : 0;
     }
 }
 
@@ -421,6 +522,12 @@ CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid&
     for (std::size_t i = 0; i < grid.holder_surfaces.size(); ++i) {
         s->surfaces[i] = w.try_get<SnowSurface>(grid.holder_surfaces[i]);
     }
+    s->covers.clear(); // capacity stays: no steady-tick allocation
+    if (const auto* covers = w.find_pool<SnowCover>()) {
+        for (const Entity e : covers->entities()) {
+            s->covers.push_back(&w.get<SnowSurface>(e));
+        }
+    }
     return *s;
 }
 
@@ -467,9 +574,24 @@ void collide_system(World& w) {
         c.blocks_x = scratch.blocks_x;
     }
     c.surfaces = scratch.surfaces.data();
+    c.covers = scratch.covers.data();
+    c.cover_count = static_cast<std::uint32_t>(scratch.covers.size());
     const auto& cfg = w.resource<SimConfig>();
     c.bounds = cfg.bounds;
     c.dt = cfg.dt;
+    if (const auto* bodies = w.find_pool<Body>(); bodies != nullptr && bodies->size() > 0) {
+        c.bodies = bodies->components().data();
+        c.body_count = static_cast<std::uint32_t>(bodies->size());
+        // Their swept boxes, grown by what a flake moves in a tick at 20 m/s
+        // (faster flakes are flagged as fast anyway).
+        for (const Body& b : bodies->components()) {
+            const glm::vec3 r{b.shape == BodyShape::box ? b.half_extents : glm::vec3{b.reach()}};
+            const glm::vec3 lift{0.0f, b.shape == BodyShape::capsule ? b.half_height : 0.0f, 0.0f};
+            const glm::vec3 margin = r + lift + glm::vec3{20.0f * c.dt};
+            c.body_box.min = glm::min(c.body_box.min, glm::min(b.previous, b.position) - margin);
+            c.body_box.max = glm::max(c.body_box.max, glm::max(b.previous, b.position) + margin);
+        }
+    }
     c.integrator = cfg.integrator;
     c.gravity = cfg.gravity;
     if (const auto* wind = w.try_resource<Wind>()) {

@@ -1,6 +1,6 @@
 // deposit: a flake that reached the snow top of a surface becomes snow there
-// (seed 002 §4: the height field grows by the flake's mass), then rolls at most
-// one cell by the deposition rules of seed 003 §IV.
+// ([WF §4]: the height field grows by the flake's mass), then rolls at most
+// one cell by the deposition rules of [ZCL §IV].
 //
 // Detection runs in parallel over fixed chunks of flake slots and only writes
 // landing records; the records are applied in slot order afterwards, so the
@@ -9,6 +9,7 @@
 #include "systems/flake_pool.hpp"
 #include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
@@ -42,6 +43,7 @@ struct SurfaceKey {
     std::uint32_t entity;
     float x0, z0, cell;
     std::uint32_t nx, nz;
+    std::uint64_t base_version;
     friend bool operator==(const SurfaceKey&, const SurfaceKey&) = default;
 };
 
@@ -79,7 +81,7 @@ struct BinGrid {
 ///
 /// Under a raised surface (a roof over the ground) the bin's highest y is the
 /// roof's, yet a flake between the ground and the roof, not crossing the roof
-/// this tick, can land on neither (flakes sliding down walls, seed 002 §4).
+/// this tick, can land on neither (flakes sliding down walls, [WF §4]).
 /// Two scene-wide heights exclude it: every flake that lands on the lowest
 /// surface of its bin is at or below `floor_top`; every flake that lands on
 /// another one is, now or a tick ago, at or above `upper_bare`.
@@ -149,12 +151,16 @@ void rebuild_grid(DepositScratch& d, const std::vector<SnowSurface>& surfaces) {
     }
     d.bin_top.assign(bins, -std::numeric_limits<float>::infinity());
     d.bounds.assign(surfaces.size(), std::numeric_limits<std::int64_t>::min());
-    // Bare tops are fixed when a surface is made; only snow changes after.
+    // Bare tops change only with base_version (part of the key); void cells catch nothing.
     d.min_bare.clear();
     for (const SnowSurface& s : surfaces) {
-        const std::int64_t lowest =
-            s.base_level.empty() ? 0 : *std::min_element(s.base_level.begin(), s.base_level.end());
-        d.min_bare.push_back(s.height(lowest));
+        std::int64_t lowest = std::numeric_limits<std::int64_t>::max();
+        for (const std::int64_t b : s.base_level) {
+            lowest = b != void_level ? std::min(lowest, b) : lowest;
+        }
+        d.min_bare.push_back(lowest == std::numeric_limits<std::int64_t>::max()
+                                 ? std::numeric_limits<float>::infinity()
+                                 : s.height(lowest));
     }
 }
 
@@ -200,13 +206,13 @@ void prepare(DepositScratch& d, World& w, const std::vector<SnowSurface>& surfac
     bool same = d.keys.size() == surfaces.size();
     for (std::size_t i = 0; same && i < surfaces.size(); ++i) {
         const SnowSurface& s = surfaces[i];
-        same = d.keys[i] == SurfaceKey{entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz};
+        same = d.keys[i] == SurfaceKey{entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz, s.base_version};
     }
     if (!same) {
         d.keys.clear();
         for (std::size_t i = 0; i < surfaces.size(); ++i) {
             const SnowSurface& s = surfaces[i];
-            d.keys.push_back({entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz});
+            d.keys.push_back({entities[i].bits, s.x0, s.z0, s.cell, s.nx, s.nz, s.base_version});
         }
         rebuild_grid(d, surfaces);
     }
@@ -276,7 +282,7 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, fl
 
 /// False when a flake at y (y_prev a tick ago, from start_y)
 /// can land on no surface: above every bin's lowest surface and below every
-/// other bare top, not crossing one (flakes sliding down walls, seed 002 §4).
+/// other bare top, not crossing one (flakes sliding down walls, [WF §4]).
 /// One read of vy for a flagged flake instead of the surface lookups.
 bool reaches(const DepositScratch& d, float y, float y_prev) {
     return y <= d.floor_top || y >= d.upper_bare || y_prev >= d.upper_bare;
@@ -336,7 +342,7 @@ void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::si
     }
 }
 
-/// Seed 003 §IV deposition rules for snow arriving on cell c: no lower
+/// [ZCL §IV] deposition rules for snow arriving on cell c: no lower
 /// neighbour -> stays (rule 1); otherwise one of the n lower neighbours with
 /// probability 1/n each, which is 25% each when all four are equal and lower
 /// (rule 2) and 1/n in general (rule 3). Returns the cell that receives it.
@@ -394,7 +400,8 @@ void deposit_system(World& w) {
     for (std::size_t c = 0; c < chunks; ++c) {
         for (const LandingRecord& r : d->chunks[c]) {
             SnowSurface& s = surfaces[r.surface];
-            const std::size_t dst = roll_target(s, r.cell, {cfg.seed, tick, r.slot, Stream::roll});
+            const std::size_t dst =
+                roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];
             s.mark_dirty(static_cast<std::uint32_t>(dst % s.nx),
                          static_cast<std::uint32_t>(dst / s.nx));

@@ -1,11 +1,12 @@
-// occlusion: the sky camera of seed 004. An orthographic depth map from above
+// occlusion: the sky camera of [SKY]. An orthographic depth map from above
 // over the bounds' XZ extent, rasterised on the CPU: per texel the highest
 // geometry and its entity. With a tilt the rays lean downwind, like the flakes,
-// so lee sides get less exposure (seed 004 "Limitations" 2: wind). Refreshed
+// so lee sides get less exposure ([SKY Limitations 2]: wind). Refreshed
 // only when the geometry or the quantised wind direction changed.
 #include "systems/occlusion.hpp"
 #include "systems/colliders.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
@@ -216,7 +217,9 @@ bool finite3(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-void rasterise(World& w, OcclusionMap& m) {
+} // namespace
+
+void rasterise_geometry(const World& w, OcclusionMap& m) {
     Rasteriser r(m);
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) {
         if (finite3(b.box.min) && finite3(b.box.max)) {
@@ -234,14 +237,16 @@ void rasterise(World& w, OcclusionMap& m) {
         }
     });
     // Surfaces last: a surface on a solid speaks for that solid (its id), so
-    // collision sees the owner; the ground speaks for itself.
+    // collision sees the owner; the ground speaks for itself. A cover is snow
+    // over the geometry, not geometry.
     w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
+        if (w.has<SnowCover>(e)) {
+            return;
+        }
         const auto* of = w.try_get<SurfaceOf>(e);
         r.surface(s, of != nullptr && !of->owner.is_null() ? of->owner.bits : e.bits);
     });
 }
-
-} // namespace
 
 bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]) {
     if (s.nx == 0 || s.nz == 0 || s.base_level.size() < static_cast<std::size_t>(s.nx) * s.nz) {
@@ -314,7 +319,7 @@ void occlusion_system(World& w) {
     const std::size_t texels = static_cast<std::size_t>(l.width) * l.height;
     map->top_y.assign(texels, neg_inf);
     map->top_id.assign(texels, 0);
-    rasterise(w, *map);
+    rasterise_geometry(w, *map);
     map->geometry_version = version;
     ++map->version;
     if (auto* counters = w.try_resource<SimCounters>()) {

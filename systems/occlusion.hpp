@@ -1,9 +1,10 @@
 /// @file occlusion.hpp
-/// @brief The occlusion ("sky") camera of seed 004: an orthographic depth map
+/// @brief The occlusion ("sky") camera of [SKY]: an orthographic depth map
 /// from above, rasterised on the CPU from the scene's meshes.
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/world.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -65,6 +66,11 @@ struct SnowSurface;
 /// is resized to the cell count (reuse it to avoid allocation).
 void surface_exposure(const OcclusionMap& map, const SnowSurface& s, std::vector<float>& out,
                       float tolerance = occlusion_tolerance);
+/// Writes the scene's geometry into `map` along its projection: per texel
+/// the highest box, sphere, mesh or declared surface top and its entity
+/// (covers are snow, not geometry). `map` must be sized and filled with
+/// -inf / 0 first.
+void rasterise_geometry(const World& w, OcclusionMap& map);
 /// Corners of a surface's bare top as the plane through its corner cells (what
 /// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1). False for an empty surface.
 [[nodiscard]] bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]);

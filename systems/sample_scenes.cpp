@@ -1,6 +1,7 @@
 #include "systems/sample_scenes.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 namespace snow {
 
@@ -51,7 +52,7 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
 
 FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n) {
     const glm::vec3 lo = config.bounds.min, hi = config.bounds.max;
-    const RngKey k{config.seed, ~0ull, n, Stream::spawn_position};
+    const RngKey k{config.seed, ~0ull, n, random_stream::spawn_position};
     FlakeSpec f;
     f.position = {rng_range(k, 0, lo.x, hi.x), rng_range(k, 1, lo.y + 0.5f * (hi.y - lo.y), hi.y),
                   rng_range(k, 2, lo.z, hi.z)};

@@ -1,6 +1,7 @@
 /// @file sample_scenes.hpp
 /// @brief Scenes built in code, shared by tests, benchmarks and examples
-/// (Box2D's shared/ habit), so they all measure the same thing.
+/// (as Box2D's samples and benchmarks share theirs), so they all measure the
+/// same thing.
 #pragma once
 
 #include "systems/simulation.hpp"

@@ -11,10 +11,11 @@ namespace snow {
 struct SimCounters {
     std::uint64_t stiff_flake_ticks = 0; ///< flake-ticks where explicit Euler was unsafe
     std::uint64_t landed = 0;            ///< flakes that became snow
-    std::uint64_t rolled = 0;            ///< of those, how many rolled (seed 003 rules 2/3)
+    std::uint64_t rolled = 0;            ///< of those, how many rolled ([ZCL §IV] rules 2/3)
     std::uint64_t smoothing_iterations = 0;
     std::uint64_t spilled_units = 0;
     std::uint64_t occlusion_refreshes = 0;
+    std::uint64_t carved_units = 0; ///< units moved out of body footprints
 };
 
 } // namespace snow

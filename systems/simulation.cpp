@@ -8,6 +8,7 @@
 #include "systems/validation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -48,13 +49,16 @@ Simulation::Simulation(const SimConfig& config) {
 Simulation::~Simulation() = default;
 
 void Simulation::build_schedule() {
-    // Order is the tick's data flow (DESIGN.md); needs make absent effects free.
+    // Order is the tick's data flow (docs/design.md "One tick"); needs make absent effects free.
     const Requirement flakes = flakes_alive;
+    schedule_.add("cover", cover_system, {needs<SnowCover>()});
+    schedule_.add("bodies", body_system, {needs<Body>()});
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
     schedule_.add("integrate", integrate_system, {flakes});
     schedule_.add("collide", collide_system, {flakes});
     schedule_.add("deposit", deposit_system, {needs<SnowSurface>(), flakes});
+    schedule_.add("carve", carve_system, {needs<Body>(), needs<SnowSurface>()});
     schedule_.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule_.add("spill", spill_system, {needs<SnowSurface>()});
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
@@ -103,6 +107,76 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     return id;
 }
 
+Entity Simulation::add_cover(const CoverDef& def) {
+    SnowSurface surface = make_cover_surface(def);
+    const Entity id = world_.create();
+    world_.add<SnowSurface>(id, std::move(surface));
+    SnowCover cover;
+    cover.drop_limit = def.drop_limit;
+    world_.add<SnowCover>(id, std::move(cover));
+    return id;
+}
+
+Entity Simulation::add_body(const BodyDef& def) {
+    throw_if(validate(def));
+    const Entity id = world_.create();
+    world_.add<Body>(id, make_body(def));
+    return id;
+}
+
+void Simulation::move_body(Entity e, const glm::vec3& position) {
+    Invalid err;
+    check::finite3(err, "move_body.position", position);
+    throw_if(err);
+    Body& b = component_of<Body>(world_, e, "move_body(body)", "body");
+    b.target = position;
+    b.has_target = true;
+}
+
+void Simulation::set_body_velocity(Entity e, const glm::vec3& velocity) {
+    Invalid err;
+    check::finite3(err, "set_body_velocity.velocity", velocity);
+    throw_if(err);
+    component_of<Body>(world_, e, "set_body_velocity(body)", "body").velocity = velocity;
+}
+
+void Simulation::set_body_motion(Entity e, const BodyMotion& motion) {
+    throw_if(validate(motion));
+    Body& b = component_of<Body>(world_, e, "set_body_motion(body)", "body");
+    b.motion = motion;
+    b.segment = 0;
+    b.along = 0.0f;
+}
+
+std::uint64_t Simulation::drop_snowball(Entity e) {
+    Body& b = component_of<Body>(world_, e, "drop_snowball(body)", "body");
+    if (b.carried == 0) {
+        return 0;
+    }
+    // Onto the highest surface cell under its centre, then smoothing spreads it.
+    SnowSurface* best = nullptr;
+    std::size_t cell = 0;
+    world_.each<SnowSurface>([&](Entity, SnowSurface& s) {
+        std::uint32_t ix = 0, iz = 0;
+        if (s.cell_at(b.position.x, b.position.z, ix, iz) && !s.is_void(s.index(ix, iz)) &&
+            (best == nullptr || s.level(s.index(ix, iz)) > best->level(cell))) {
+            best = &s;
+            cell = s.index(ix, iz);
+        }
+    });
+    if (best == nullptr) {
+        throw SimulationError("drop_snowball(body)", "has no snow surface or cover under it");
+    }
+    const std::uint64_t room = std::numeric_limits<std::uint32_t>::max() - best->snow[cell];
+    const std::uint64_t units = std::min(b.carried, room);
+    best->snow[cell] += static_cast<std::uint32_t>(units);
+    best->mark_dirty(static_cast<std::uint32_t>(cell % best->nx),
+                     static_cast<std::uint32_t>(cell / best->nx));
+    b.carried -= units;
+    b.radius = snowball_radius(b.bare_radius, b.carried);
+    return units;
+}
+
 Entity Simulation::add_box(const Aabb& box) {
     throw_if(validate(box));
     const Entity id = world_.create();
@@ -146,7 +220,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
-    // Flakes meet meshes only through the sky map (seed 004): a mesh needs one.
+    // Flakes meet meshes only through the sky map [SKY]: a mesh needs one.
     if (!world_.has_resource<OcclusionCamera>()) {
         world_.set_resource<OcclusionCamera>();
     }
@@ -251,6 +325,10 @@ const SnowSurface& Simulation::surface(Entity surface) const {
     return component_of<SnowSurface>(world_, surface, "surface(entity)", "snow surface");
 }
 
+const Body& Simulation::body(Entity body) const {
+    return component_of<Body>(world_, body, "body(entity)", "body");
+}
+
 void Simulation::set_integrator(Integrator i) {
     SimConfig c = world_.resource<SimConfig>();
     c.integrator = i;
@@ -296,6 +374,15 @@ std::uint64_t Simulation::state_hash() const {
         h.value(w->deviation);
         h.value(w->gust_left);
     }
+    world_.each<Body>([&](Entity e, const Body& b) {
+        h.value(e.bits);
+        h.value(b.position);
+        h.value(b.previous);
+        h.value(b.radius);
+        h.value(b.segment);
+        h.value(b.along);
+        h.value(b.carried);
+    });
     return h.digest();
 }
 
@@ -306,6 +393,7 @@ MassReport Simulation::mass() const {
     r.removed = ledger.removed();
     r.airborne = world_.resource<FlakePool>().airborne_units();
     world_.each<SnowSurface>([&](Entity, const SnowSurface& s) { r.settled += s.settled_units(); });
+    world_.each<Body>([&](Entity, const Body& b) { r.carried += b.carried; });
     return r;
 }
 
@@ -338,6 +426,7 @@ std::unique_ptr<Snapshot> Simulation::save() const {
     }
     world_.each<SnowSurface>(
         [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
+    world_.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
     return s;
 }
 
@@ -346,6 +435,11 @@ void Simulation::restore(const Snapshot& s) {
         if (!world_.has<SnowSurface>(e)) {
             throw SimulationError(
                 "restore: snapshot belongs to a different scene (surface missing)");
+        }
+    }
+    for (const auto& [e, body] : s.bodies) {
+        if (!world_.has<Body>(e)) {
+            throw SimulationError("restore: snapshot belongs to a different scene (body missing)");
         }
     }
     FlakePool& pool = world_.resource<FlakePool>();
@@ -360,6 +454,9 @@ void Simulation::restore(const Snapshot& s) {
     }
     for (const auto& [e, surf] : s.surfaces) {
         world_.get<SnowSurface>(e) = surf;
+    }
+    for (const auto& [e, body] : s.bodies) {
+        world_.get<Body>(e) = body;
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
+#include "systems/body.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/fog.hpp"
@@ -16,6 +17,7 @@
 #include "systems/sim_counters.hpp"
 #include "systems/simulation_error.hpp"
 #include "systems/snapshot.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/spectral_snow.hpp"
 #include "systems/wind.hpp"
@@ -48,6 +50,23 @@ class Simulation {
     /// ground). Flakes reaching an owner's top are kept only where one of its
     /// surfaces covers that point.
     Entity add_surface(const SurfaceDef& def, Entity owner = null_entity);
+    /// A snow cover over a rectangle: snow lies on whatever geometry is under
+    /// it (its base follows the highest geometry of each column, rebuilt at
+    /// the start of a tick after geometry changed). Columns whose top is a
+    /// declared surface stay with that surface.
+    Entity add_cover(const CoverDef& def);
+    /// A moving body (sphere, box, upright capsule): pushes flakes aside,
+    /// carves trails through snow, a snowball picks snow up. Not part of
+    /// the static geometry (no sky map or cover rebuild when it moves).
+    Entity add_body(const BodyDef& def);
+    /// Where body `e` is next tick (swept from where it is now).
+    void move_body(Entity e, const glm::vec3& position);
+    /// Velocity (m/s) of a body without a path or a move_body target.
+    void set_body_velocity(Entity e, const glm::vec3& velocity);
+    /// A scripted path for body `e`, from its first waypoint on.
+    void set_body_motion(Entity e, const BodyMotion& motion);
+    /// Puts a snowball's snow back on the cell under it; returns the units.
+    std::uint64_t drop_snowball(Entity e);
     Entity add_box(const Aabb& box);
     /// Moves a box collider to `box`. A box that carries a snow surface cannot
     /// move (its snow would hang in the air): remove it and add a new one.
@@ -84,6 +103,8 @@ class Simulation {
     [[nodiscard]] const FlakePool& flakes() const { return world_.resource<FlakePool>(); }
     /// The snow surface of a surface entity (depth per cell: snow[i] * unit_height).
     [[nodiscard]] const SnowSurface& surface(Entity surface) const;
+    /// A moving body as this tick left it (position, radius, snow carried).
+    [[nodiscard]] const Body& body(Entity body) const;
     [[nodiscard]] const Schedule& schedule() const { return schedule_; }
     [[nodiscard]] const SimCounters& counters() const { return world_.resource<SimCounters>(); }
     /// 64-bit hash of the canonical simulation state (flakes, cells, wind, clock).

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "systems/body.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/sim_config.hpp"
@@ -23,6 +24,7 @@ struct Snapshot {
     MassLedger ledger;
     std::optional<Wind> wind;
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
+    std::vector<std::pair<Entity, Body>> bodies;
 };
 
 } // namespace snow

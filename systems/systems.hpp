@@ -1,6 +1,6 @@
 /// @file systems.hpp
 /// @brief The simulation systems, one free function each, in tick order
-/// (DESIGN.md "Data flow of one tick"). Each lives in its own .cpp file.
+/// (docs/design.md "One tick"). Each lives in its own .cpp file.
 #pragma once
 
 #include "ecs/world.hpp"
@@ -8,13 +8,16 @@
 
 namespace snow {
 
-void spawn_system(World& w);        ///< spawn.cpp: inactive flakes activate (seed 002 §4)
-void wind_system(World& w);         ///< wind_system.cpp: bounded random walk + gusts
-void integrate_system(World& w);    ///< integrate.cpp: gravity + drag to wind
-void collide_system(World& w);      ///< collide.cpp: boxes, spheres, meshes, bounds
-void deposit_system(World& w);      ///< deposit.cpp: landing + rolling rules (seed 003 §IV)
-void redistribute_system(World& w); ///< redistribute.cpp: Laplacian cap (seed 002 §3)
+void cover_system(World& w);     ///< snow_cover.cpp: covers follow the geometry under them
+void body_system(World& w);      ///< body_motion.cpp: moving bodies take this tick's pose
+void spawn_system(World& w);     ///< spawn.cpp: inactive flakes activate [WF §4]
+void wind_system(World& w);      ///< wind_system.cpp: bounded random walk + gusts
+void integrate_system(World& w); ///< integrate.cpp: gravity + drag to wind
+void collide_system(World& w);   ///< collide.cpp: boxes, spheres, meshes, bounds
+void deposit_system(World& w);   ///< deposit.cpp: landing + rolling rules [ZCL §IV]
+void carve_system(World& w);     ///< carve.cpp: bodies push snow to trail rims, snowballs take it
+void redistribute_system(World& w); ///< redistribute.cpp: Laplacian cap [WF §3]
 void spill_system(World& w);        ///< spill.cpp: edge overflow to lower surfaces
-void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map (seed 004)
+void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map [SKY]
 
 } // namespace snow

@@ -4,9 +4,14 @@
 
 #include "systems/units.hpp"
 
+#include <algorithm>
+
 namespace snow {
 
 namespace {
+/// Largest body size (m): anything larger is an input error, not a body.
+constexpr double max_body_size = 100.0;
+
 bool power_of_two(std::uint32_t v) {
     return v != 0 && (v & (v - 1)) == 0;
 }
@@ -145,6 +150,50 @@ Invalid validate(const SpectralSnow& s) {
     check::non_negative(e, "spectral.opacity", s.opacity);
     check::at_most(e, "spectral.opacity", s.opacity, 1.0);
     check::non_negative(e, "spectral.start_distance", s.start_distance);
+    return e;
+}
+
+Invalid validate(const BodyMotion& m) {
+    Invalid e;
+    if (m.waypoints.empty()) {
+        e = {"motion.waypoints", "must hold at least one point (got none)"};
+    }
+    for (std::size_t i = 0; i < m.waypoints.size() && e.empty(); ++i) {
+        check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
+    }
+    check::non_negative(e, "motion.speed", m.speed);
+    check::at_most(e, "motion.speed", m.speed, 1000.0);
+    return e;
+}
+
+Invalid validate(const BodyDef& d) {
+    Invalid e;
+    if (d.shape != BodyShape::sphere && d.shape != BodyShape::box &&
+        d.shape != BodyShape::capsule) {
+        check::fail(e, "body.shape", "sphere, box or capsule", static_cast<double>(d.shape));
+    }
+    check::finite3(e, "body.position", d.position);
+    if (d.shape == BodyShape::box) {
+        check::positive(e, "body.half_extents.x", d.half_extents.x);
+        check::positive(e, "body.half_extents.y", d.half_extents.y);
+        check::positive(e, "body.half_extents.z", d.half_extents.z);
+        check::at_most(e, "body.half_extents (largest)",
+                       std::max({d.half_extents.x, d.half_extents.y, d.half_extents.z}),
+                       max_body_size);
+    } else {
+        check::positive(e, "body.radius", d.radius);
+        check::at_most(e, "body.radius", d.radius, max_body_size);
+    }
+    if (d.shape == BodyShape::capsule) {
+        check::non_negative(e, "body.half_height", d.half_height);
+        check::at_most(e, "body.half_height", d.half_height, max_body_size);
+    }
+    if (e.empty() && d.snowball && d.shape != BodyShape::sphere) {
+        e = {"body.snowball", "needs shape sphere"};
+    }
+    if (e.empty() && !d.motion.waypoints.empty()) {
+        e = validate(d.motion);
+    }
     return e;
 }
 

@@ -4,6 +4,7 @@
 /// the facade and the scene loader).
 #pragma once
 
+#include "systems/body.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/fog.hpp"
@@ -45,6 +46,10 @@ inline void throw_if(const Invalid& v) {
 [[nodiscard]] Invalid validate(const Wind& w);
 [[nodiscard]] Invalid validate(const Fog& f);
 [[nodiscard]] Invalid validate(const SpectralSnow& s);
+/// A scripted path (fields "motion.waypoints", "motion.speed").
+[[nodiscard]] Invalid validate(const BodyMotion& motion);
+/// A body's shape and size, and its motion when it has waypoints (fields "body.*").
+[[nodiscard]] Invalid validate(const BodyDef& def);
 
 } // namespace snow
 

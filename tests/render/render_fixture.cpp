@@ -148,13 +148,13 @@ void build_fixture(FixtureScene& s) {
     s.house_roof = w.create();
     w.add<SnowSurface>(s.house_roof, std::move(roof));
 
-    // Three coloured point lights as in seed 002 §5: white above the house,
+    // Three coloured point lights as in [WF §5]: white above the house,
     // blue toward the camera, yellow to the right.
     s.visuals.lights = {PointLight{{-2.5f, 7.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 1.0f},
                         PointLight{{-1.0f, 3.0f, 7.0f}, {0.45f, 0.55f, 1.0f}, 0.7f},
                         PointLight{{7.0f, 3.5f, 1.0f}, {1.0f, 0.85f, 0.45f}, 0.7f}};
 
-    // The sky camera's map (seed 004), rasterised from the boxes above.
+    // The sky camera's map [SKY], rasterised from the boxes above.
     OcclusionMap& map = w.set_resource<OcclusionMap>();
     map.x0 = -6.0f;
     map.z0 = -6.0f;

@@ -1,6 +1,6 @@
-// Determinism as Box2D and Jolt test it (RELIABILITY.md): the same scene and
-// seed give the same state hash run after run, and 1 and 2 threads agree on
-// every tick.
+// Determinism as Box2D and Jolt test it (docs/design.md "Determinism"): the
+// same scene and seed give the same state hash run after run, and 1 and 2
+// threads agree on every tick.
 #include "systems/sample_scenes.hpp"
 
 #include <gtest/gtest.h>

@@ -124,7 +124,8 @@ void overload_edges(Simulation& sim) {
 
 /// The yard with everything switched on: emitter, walking and gusting wind,
 /// a mesh roof over the snowman seen through a tilted sky camera, and a
-/// garage roof whose edge is over its limit (so it spills at once).
+/// garage roof whose edge is over its limit (so it spills at once), and a
+/// snow cover over the snowman and the mesh roof.
 std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     YardOptions o;
     o.threads = threads;
@@ -147,6 +148,13 @@ std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     cam.tilt = 0.4f; // the map leans with the wind: refreshes as it turns
     sim->set_occlusion(cam);
     overload_edges(*sim);
+    CoverDef cover; // over the snowman and the mesh roof: their tops get snow
+    cover.min_x = -7.0f;
+    cover.min_z = 0.0f;
+    cover.max_x = 1.0f;
+    cover.max_z = 6.0f;
+    cover.cell = 0.1f;
+    sim->add_cover(cover);
     return sim;
 }
 

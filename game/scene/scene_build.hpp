@@ -3,9 +3,9 @@
 /// facade (systems/simulation.hpp), and its SceneVisuals (internal to snow::scene).
 #pragma once
 
-#include "game/scene_geometry.hpp"
-#include "game/scene_loader.hpp"
-#include "game/scene_schema.hpp"
+#include "game/scene/scene_geometry.hpp"
+#include "game/scene/scene_loader.hpp"
+#include "game/scene/scene_schema.hpp"
 
 #include <memory>
 #include <optional>

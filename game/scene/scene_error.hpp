@@ -25,7 +25,7 @@ class SceneError : public Error {
 
 /// `"text"` with the quotes, for error messages. (Built by appending: GCC 12
 /// warns falsely, -Wrestrict, on `"\"" + std::string&&`.)
-[[nodiscard]] inline std::string quoted(const std::string& text) {
+[[nodiscard]] inline std::string in_quotes(const std::string& text) {
     std::string out(1, '"');
     out += text;
     out += '"';
