@@ -1,5 +1,6 @@
 #include "game/run_report.hpp"
 
+#include "game/export/surface_list.hpp"
 #include "systems/units.hpp"
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,8 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
     j["integrator"] = std::string(integrator_name(cfg.integrator));
     j["state_hash"] = hash_hex(sim.state_hash());
     j["mass"] = {{"unit_kg", unit_kg},   {"spawned", m.spawned}, {"airborne", m.airborne},
-                 {"settled", m.settled}, {"removed", m.removed}, {"balanced", m.balanced()}};
+                 {"settled", m.settled}, {"carried", m.carried}, {"removed", m.removed},
+                 {"balanced", m.balanced()}};
     j["flakes"] = {{"alive", sim.flakes().alive},
                    {"max_alive", sim.flakes().max_alive},
                    {"capacity", sim.flakes().capacity()}};
@@ -49,6 +51,17 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
              {"ms_per_call", s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0}});
     }
     j["systems"] = systems;
+    auto surfaces = nlohmann::ordered_json::array();
+    for (const NamedSurface& ns : named_surfaces(sim)) {
+        const SurfaceStats st = surface_stats(*ns.surface);
+        surfaces.push_back({{"name", ns.name},
+                            {"kind", kind_name(ns.kind)},
+                            {"cells", st.cells},
+                            {"settled_units", st.settled_units},
+                            {"mean_depth_m", st.mean_depth_m},
+                            {"max_depth_m", st.max_depth_m}});
+    }
+    j["surfaces"] = surfaces;
     j["wall_ms"] = info.wall_ms;
     return j.dump(2);
 }
@@ -62,7 +75,7 @@ std::string run_report_text(const Simulation& sim, const RunInfo& info) {
        << cfg.threads << " thread(s), integrator " << integrator_name(cfg.integrator) << ")\n"
        << "state hash " << hash_hex(sim.state_hash()) << "\n"
        << "mass units spawned " << m.spawned << " = airborne " << m.airborne << " + settled "
-       << m.settled << " + removed " << m.removed << (m.balanced() ? "  (exact)" : "  (MISMATCH)")
+       << m.settled << " + carried " << m.carried << " + removed " << m.removed << (m.balanced() ? "  (exact)" : "  (MISMATCH)")
        << "\n"
        << "flakes     alive " << sim.flakes().alive << ", max alive " << sim.flakes().max_alive
        << "\n"
@@ -75,6 +88,16 @@ std::string run_report_text(const Simulation& sim, const RunInfo& info) {
                       static_cast<unsigned long long>(s.calls),
                       static_cast<unsigned long long>(s.skipped), s.total_ms,
                       s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0);
+        os << line;
+    }
+    os << "surface           cells    settled units  mean depth mm  max depth mm\n";
+    for (const NamedSurface& ns : named_surfaces(sim)) {
+        const SurfaceStats st = surface_stats(*ns.surface);
+        char line[160];
+        std::snprintf(line, sizeof line, "%-14s %9llu %16llu %14.3f %13.3f\n", ns.name.c_str(),
+                      static_cast<unsigned long long>(st.cells),
+                      static_cast<unsigned long long>(st.settled_units), st.mean_depth_m * 1e3,
+                      st.max_depth_m * 1e3);
         os << line;
     }
     return os.str();

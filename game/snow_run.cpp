@@ -1,7 +1,9 @@
 // snow_run: the headless simulation CLI. Runs a scene for N ticks and prints
-// the state hash, the exact mass balance and what each system cost.
+// the state hash, the exact mass balance and what each system cost; bakes
+// the settled snow out on request (--export, --export-depth).
 #include "game/builtin_scene.hpp"
 #include "game/cli_args.hpp"
+#include "game/export/snow_export.hpp"
 #include "game/run_report.hpp"
 #include "game/scene/scene_loader.hpp"
 
@@ -19,14 +21,20 @@ constexpr const char* usage_head = R"(usage: snow_run [options]
   --ticks N           ticks to simulate (default 200)
 )";
 constexpr const char* usage_tail = R"(  --report json|text  what to print at the end (default text)
+  --export FILE.glb   after the run, write the settled snow as glTF 2.0 meshes
+  --export-depth DIR  after the run, write each surface's depth as a 16-bit PNG
+                      (millimetres) and a JSON sidecar into DIR
   --help              this text
-Exit status: 0 ok, 2 bad arguments or bad scene, 1 other failure.
+Exit status: 0 ok, 2 bad arguments, bad scene or an export path that cannot
+be written, 1 other failure.
 )";
 
 struct Options {
     std::optional<std::string> scene;
     std::uint64_t ticks = 200;
     bool json = false;
+    std::optional<std::string> export_glb;
+    std::optional<std::string> export_depth;
     snow::SceneOverrides overrides;
 };
 
@@ -54,11 +62,38 @@ Options parse(int argc, char** argv) {
                 throw UsageError{"--report: expected json or text, got '" + std::string(r) + "'"};
             }
             o.json = r == "json";
+        } else if (f == "--export" || f == "--export-depth") {
+            const std::string_view path = args.value();
+            if (path.empty()) {
+                throw UsageError{std::string(f) + ": expected a path"};
+            }
+            (f == "--export" ? o.export_glb : o.export_depth) = std::string(path);
         } else {
             args.unknown();
         }
     }
     return o;
+}
+
+/// Writes the exports asked for; with no `sim`, only checks that their paths
+/// can be written. A failure is printed naming the flag and returns false.
+bool write_exports(const Options& o, const snow::Simulation* sim) {
+    const char* flag = "--export";
+    try {
+        if (o.export_glb) {
+            sim ? snow::export_snow_glb(*sim, *o.export_glb)
+                : snow::check_file_writable(*o.export_glb);
+        }
+        flag = "--export-depth";
+        if (o.export_depth) {
+            sim ? snow::export_snow_depth(*sim, *o.export_depth)
+                : snow::prepare_output_dir(*o.export_depth);
+        }
+        return true;
+    } catch (const snow::ExportError& e) {
+        std::fprintf(stderr, "snow_run: %s: %s\n", flag, e.what());
+        return false;
+    }
 }
 
 } // namespace
@@ -79,6 +114,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "snow_run: %s\n", scene.error.c_str());
         return 2;
     }
+    // Unwritable export paths fail now, not after the run.
+    if (!write_exports(opt, nullptr)) {
+        return 2;
+    }
     try {
         snow::Simulation& sim = *scene.sim;
         // Progress on stderr for long runs, so stdout stays one report.
@@ -94,6 +133,9 @@ int main(int argc, char** argv) {
             std::fputc('\n', stderr);
         }
         const auto t1 = std::chrono::steady_clock::now();
+        if (!write_exports(opt, &sim)) {
+            return 2;
+        }
         const snow::RunInfo info{scene.name, opt.ticks,
                                  std::chrono::duration<double, std::milli>(t1 - t0).count()};
         std::cout << (opt.json ? snow::run_report_json(sim, info)

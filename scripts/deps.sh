@@ -9,10 +9,16 @@ packages=(
     libglm-dev                                   # snow_sim (the only dependency of the simulation)
     libglfw3-dev libosmesa6-dev libegl-dev libegl-mesa0 libstb-dev python3-glad libimgui-dev  # snow_render, snow_game
     nlohmann-json3-dev                           # snow_scene
+    zlib1g-dev                                   # snow_export (16-bit depth PNGs)
     googletest libgtest-dev libbenchmark-dev     # snow_tests, snow_bench
     xvfb xauth                                   # window tests without a display
     gnuplot-nox                                  # plots in docs/
 )
+# The glTF validator test (npm gltf-validator) needs node and npm; any
+# install of them will do, so Debian's are added only when there are none.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

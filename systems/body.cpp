@@ -9,12 +9,12 @@
 
 namespace snow {
 
-bool Body::bottom_at(float dx, float dz, float& y) const {
+bool Body::depth_below(float dx, float dz, float& depth) const {
     if (shape == BodyShape::box) {
         if (!(std::abs(dx) <= half_extents.x && std::abs(dz) <= half_extents.z)) {
             return false;
         }
-        y = position.y - half_extents.y;
+        depth = half_extents.y;
         return true;
     }
     const float d2 = dx * dx + dz * dz;
@@ -22,7 +22,7 @@ bool Body::bottom_at(float dx, float dz, float& y) const {
         return false;
     }
     const float core = shape == BodyShape::capsule ? half_height : 0.0f;
-    y = position.y - core - std::sqrt(radius * radius - d2);
+    depth = core + std::sqrt(radius * radius - d2);
     return true;
 }
 

@@ -61,9 +61,9 @@ struct Body {
     float along = 0.0f;        ///< path: metres along that segment
     std::uint64_t carried = 0; ///< snowball: units picked up (ledger bucket `carried`)
 
-    /// Lowest point of the body above horizontal offset (dx, dz) from its
-    /// centre, or false when (dx, dz) lies outside its footprint.
-    [[nodiscard]] bool bottom_at(float dx, float dz, float& y) const;
+    /// How far below its centre the body reaches at horizontal offset
+    /// (dx, dz) from it, or false when (dx, dz) lies outside its footprint.
+    [[nodiscard]] bool depth_below(float dx, float dz, float& depth) const;
     /// Half width of the footprint's bounding square (m).
     [[nodiscard]] float reach() const;
 };

@@ -46,12 +46,12 @@ bool cell_window(const SnowSurface& s, const Body& b, CellBox& box) {
 bool swept_bottom(const Body& b, float x, float z, std::uint32_t steps, float& y) {
     y = std::numeric_limits<float>::infinity();
     bool hit = false;
-    Body at = b;
     for (std::uint32_t k = 0; k <= steps; ++k) {
-        at.position = b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
-        float here = 0.0f;
-        if (at.bottom_at(x - at.position.x, z - at.position.z, here)) {
-            y = std::min(y, here);
+        const glm::vec3 at =
+            b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
+        float depth = 0.0f;
+        if (b.depth_below(x - at.x, z - at.z, depth)) {
+            y = std::min(y, at.y - depth);
             hit = true;
         }
     }

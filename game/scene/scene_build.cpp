@@ -239,7 +239,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         through_facade(prefix, [&] { sim->set_spectral(*s.spectral); });
     }
     if (s.cover) {
-        through_facade(prefix, [&] { return sim->add_cover(*s.cover); });
+        CoverDef cover = *s.cover;
+        cover.cell *= o.cell_scale.value_or(1.0f); // quality presets scale every grid
+        through_facade(prefix, [&] { return sim->add_cover(cover); });
     }
     // After the scene's own camera and the default one mesh colliders bring.
     if (const auto* cam = sim->world().try_resource<OcclusionCamera>();

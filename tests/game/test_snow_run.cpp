@@ -27,6 +27,7 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
     EXPECT_GT(m["unit_kg"].get<double>(), 0.0);
     EXPECT_EQ(m["spawned"].get<std::uint64_t>(), m["airborne"].get<std::uint64_t>() +
                                                      m["settled"].get<std::uint64_t>() +
+                                                     m["carried"].get<std::uint64_t>() +
                                                      m["removed"].get<std::uint64_t>());
     EXPECT_GT(m["settled"].get<std::uint64_t>(), 0u);
     EXPECT_GT(j["flakes"]["alive"].get<int>(), 0);

@@ -125,7 +125,7 @@ void overload_edges(Simulation& sim) {
 /// The yard with everything switched on: emitter, walking and gusting wind,
 /// a mesh roof over the snowman seen through a tilted sky camera, and a
 /// garage roof whose edge is over its limit (so it spills at once), and a
-/// snow cover over the snowman and the mesh roof.
+/// snow cover over the snowman and the mesh roof, and a walker.
 std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     YardOptions o;
     o.threads = threads;
@@ -155,6 +155,14 @@ std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     cover.max_z = 6.0f;
     cover.cell = 0.1f;
     sim->add_cover(cover);
+    BodyDef walker; // laps through the ground's snow: carving allocates nothing either
+    walker.shape = BodyShape::capsule;
+    walker.radius = 0.25f;
+    walker.half_height = 0.6f;
+    walker.on_ground = true;
+    walker.motion = BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}},
+                               1.5f, true};
+    sim->add_body(walker);
     return sim;
 }
 

@@ -1,0 +1,43 @@
+#include "game/export/surface_list.hpp"
+
+#include <algorithm>
+
+namespace snow {
+
+std::string_view kind_name(SurfaceKind k) {
+    return k == SurfaceKind::cover ? "cover" : "surface";
+}
+
+std::vector<NamedSurface> named_surfaces(const Simulation& sim) {
+    const World& w = sim.world();
+    std::vector<NamedSurface> out;
+    w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
+        const SurfaceKind kind = w.has<SnowCover>(e) ? SurfaceKind::cover : SurfaceKind::surface;
+        out.push_back(
+            {e, kind, std::string(kind_name(kind)) + "_" + std::to_string(e.index()), &s});
+    });
+    std::sort(out.begin(), out.end(), [](const NamedSurface& a, const NamedSurface& b) {
+        return a.entity.index() < b.entity.index();
+    });
+    return out;
+}
+
+SurfaceStats surface_stats(const SnowSurface& s) {
+    SurfaceStats st;
+    std::uint32_t max_units = 0;
+    for (std::size_t i = 0; i < s.cell_count(); ++i) {
+        if (!s.is_void(i)) {
+            ++st.cells;
+            st.settled_units += s.snow[i];
+            max_units = std::max(max_units, s.snow[i]);
+        }
+    }
+    const double unit = s.unit_height;
+    st.mean_depth_m =
+        st.cells > 0 ? static_cast<double>(st.settled_units) * unit / static_cast<double>(st.cells)
+                     : 0.0;
+    st.max_depth_m = static_cast<double>(max_units) * unit;
+    return st;
+}
+
+} // namespace snow
