@@ -1,9 +1,10 @@
 // Occlusion refresh ([SKY] sky map, issue #8): the cost of one full
 // rebuild, which the occlusion system does only when geometry or the wind's
-// lean changed. The yard plus a bumpy roof mesh of 2·32² triangles.
+// lean changed. The yard plus a bumpy roof mesh of 2·32² triangles and a
+// small shed that moves between two spots, so every iteration rebuilds.
 #include "bench_scene.hpp"
 
-#include "systems/systems.hpp"
+#include "systems/internal_access.hpp"
 
 #include <cmath>
 #include <vector>
@@ -37,9 +38,13 @@ void occlusion_refresh(benchmark::State& state) {
     OcclusionCamera cam;
     cam.resolution = static_cast<std::uint32_t>(state.range(0));
     sim->set_occlusion(cam);
-    World& w = sim->world();
+    const Aabb spots[2] = {{{5.0f, 0.0f, -7.0f}, {6.0f, 1.0f, -6.0f}},
+                           {{5.5f, 0.0f, -7.0f}, {6.5f, 1.0f, -6.0f}}};
+    const Entity shed = sim->add_box(spots[0]);
+    World& w = InternalAccess::world(*sim);
+    std::uint64_t i = 0;
     for (auto _ : state) {
-        ++w.resource<GeometryVersion>().version; // forces the rebuild
+        sim->move_box(shed, spots[++i % 2]); // geometry changed: the next refresh rebuilds
         occlusion_system(w);
     }
     state.counters["refreshes"] = static_cast<double>(sim->counters().occlusion_refreshes) /

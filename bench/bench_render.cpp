@@ -7,13 +7,11 @@
 
 #include "bench_scene.hpp"
 
-#include "render/camera.hpp"
 #include "render/flake_selection.hpp"
-#include "render/osmesa_context.hpp"
-#include "render/renderer.hpp"
+
+#include <snow/render.hpp>
 
 #include "systems/units.hpp"
-#include "systems/visuals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,10 +57,11 @@ void render_frame(benchmark::State& state) {
     OsMesaContext context(frame_width, frame_height);
     Renderer renderer(context);
     const ViewCamera cam = yard_camera();
-    renderer.render(bw.sim->world(), cam); // compiles shaders, uploads surfaces
+    const SceneVisuals no_meshes;
+    renderer.render(bw.sim->world(), no_meshes, cam); // compiles shaders, uploads surfaces
     double flake_ms = 0.0;
     for (auto _ : state) {
-        renderer.render(bw.sim->world(), cam);
+        renderer.render(bw.sim->world(), no_meshes, cam);
         for (const PassTiming& p : renderer.timings().passes) {
             flake_ms += p.name == "flakes" ? p.cpu_ms : 0.0;
         }
@@ -121,7 +120,7 @@ void render_snow_cover(benchmark::State& state) {
     World world;
     const Entity cover = world.create();
     world.add<SnowSurface>(cover, snow_cover(static_cast<std::uint32_t>(state.range(0))));
-    world.set_resource<Environment>();
+    const SceneVisuals visuals; // no meshes: the snow-surface pass alone
     OsMesaContext context(640, 480);
     RenderSettings settings;
     settings.timing_mode = true;
@@ -134,7 +133,7 @@ void render_snow_cover(benchmark::State& state) {
         cam.position = {3.0f, 2.2f, 10.0f};
         cam.look_at({3.0f, 1.0f, -20.0f});
     }
-    renderer.render(world, cam); // compiles shaders, uploads every tile
+    renderer.render(world, visuals, cam); // compiles shaders, uploads every tile
     SnowSurface& s = world.get<SnowSurface>(cover);
     const auto changed = static_cast<std::uint32_t>(state.range(2));
     double pass_ms = 0.0, frame_ms = 0.0;
@@ -145,7 +144,7 @@ void render_snow_cover(benchmark::State& state) {
             s.snow[(static_cast<std::size_t>(frame * changed + k) * 104729u) % s.snow.size()] += 1;
         }
         ++frame;
-        renderer.render(world, cam);
+        renderer.render(world, visuals, cam);
         for (const PassTiming& p : renderer.timings().passes) {
             pass_ms += p.name == "snow_surfaces" ? p.cpu_ms : 0.0;
         }

@@ -1,5 +1,7 @@
 #include "bench_scene.hpp"
 
+#include "systems/colliders.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,7 +21,7 @@ double fract(double x) {
 /// or above any box or sphere whose footprint covers (x, z), so no flake
 /// starts inside a collider (it would be pushed out to a wall and make a
 /// drift that no steady snowfall has).
-float start_floor(World& w, float x, float z) {
+float start_floor(const World& w, float x, float z) {
     float floor = 0.05f;
     w.each<BoxCollider>([&](Entity, const BoxCollider& b) {
         if (x >= b.box.min.x && x <= b.box.max.x && z >= b.box.min.z && z <= b.box.max.z) {
@@ -35,22 +37,18 @@ float start_floor(World& w, float x, float z) {
     return floor;
 }
 
-/// Spreads the alive flakes over [start_floor, top of bounds] (a fixed
-/// low-discrepancy sequence in the slot) at terminal velocity in the wind.
-void spread_over_height(Simulation& sim) {
-    World& w = sim.world();
-    FlakePool& f = w.resource<FlakePool>();
+/// Places `count` prefill flakes spread over [start_floor, top of bounds] (a
+/// fixed low-discrepancy sequence in the flake number) at terminal velocity in the wind.
+void place_over_height(Simulation& sim, std::uint32_t count) {
+    const World& w = sim.world();
     const float top = sim.config().bounds.max.y;
     const glm::vec3 wind = w.resource<Wind>().current;
-    for (std::uint32_t i = 0; i < f.slot_end; ++i) {
-        if (!f.is_alive(i)) {
-            continue;
-        }
-        const float lo = start_floor(w, f.px[i], f.pz[i]);
-        f.py[i] = lo + (top - lo) * static_cast<float>(fract(i * 0.7548776662466927));
-        f.vx[i] = wind.x;
-        f.vy[i] = wind.y - 9.81f / f.k_over_m[i];
-        f.vz[i] = wind.z;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        FlakeSpec f = prefill_flake(sim.config(), i);
+        const float lo = start_floor(w, f.position.x, f.position.z);
+        f.position.y = lo + (top - lo) * static_cast<float>(fract(i * 0.7548776662466927));
+        f.velocity = wind - glm::vec3(0.0f, 9.81f / f.k_over_m, 0.0f);
+        (void)sim.place_flake(f);
     }
 }
 
@@ -62,10 +60,10 @@ BenchWorld::BenchWorld(std::uint32_t flakes, unsigned threads, Load load) {
     o.ground_cells = 512;
     o.max_flakes = flakes + flakes / 8;
     o.emitter_rate = 0.0f; // the load is the prefilled flakes, restored periodically
-    o.prefill = flakes;
+    o.prefill = load == Load::aloft ? flakes : 0;
     sim = make_yard(o);
     if (load == Load::snowfall) {
-        spread_over_height(*sim);
+        place_over_height(*sim, flakes);
         sim->run(settle_ticks);
     }
     start = sim->save();

@@ -2,7 +2,7 @@
 // on (the dirty area), not by the surface's size; spill by the border.
 #include "bench_scene.hpp"
 
-#include "systems/systems.hpp"
+#include "systems/internal_access.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -24,7 +24,7 @@ struct Field {
         entity = sim.add_surface(d);
         bare = surface().snow;
     }
-    SnowSurface& surface() { return sim.world().get<SnowSurface>(entity); }
+    SnowSurface& surface() { return InternalAccess::world(sim).get<SnowSurface>(entity); }
     void land(std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
         SnowSurface& s = surface();
         s.snow[s.index(ix, iz)] += units;
@@ -67,7 +67,7 @@ void redistribute_patch(benchmark::State& state) {
                 f.land(p0 + i, p0 + j, pattern(i, j));
             }
         }
-        redistribute_system(f.sim.world());
+        redistribute_system(InternalAccess::world(f.sim));
         state.PauseTiming();
         f.restore(p0 - reach, p0 - reach, p0 + patch + reach, p0 + patch + reach);
         state.ResumeTiming();
@@ -91,7 +91,7 @@ void redistribute_scattered(benchmark::State& state) {
             const std::uint32_t h = (k + 1) * 2654435761u;
             f.land((h >> 8) % side, (h >> 20) * 7 % side, 1 + k % 40);
         }
-        redistribute_system(f.sim.world());
+        redistribute_system(InternalAccess::world(f.sim));
         state.PauseTiming();
         f.restore(0, 0, side - 1, side - 1);
         state.ResumeTiming();
@@ -111,11 +111,11 @@ void spill_border(benchmark::State& state) {
             f.bare[s.index(ix, iz)] = border ? s.edge_limit_units + 2500 : 0;
         }
     }
-    f.sim.world().resource<MassLedger>().spawned = s.settled_units();
+    InternalAccess::world(f.sim).resource<MassLedger>().spawned = s.settled_units();
     f.restore(0, 0, side - 1, side - 1);
     const auto start = f.sim.save();
     for (auto _ : state) {
-        spill_system(f.sim.world());
+        spill_system(InternalAccess::world(f.sim));
         state.PauseTiming();
         f.sim.restore(*start);
         state.ResumeTiming();

@@ -4,8 +4,7 @@
 // ns_per_flake with BM_Integrate: the difference is the sampling).
 #include "bench_scene.hpp"
 
-#include "systems/systems.hpp"
-#include <cstdlib>
+#include "systems/internal_access.hpp"
 
 namespace snow::bench {
 namespace {
@@ -25,25 +24,25 @@ void field_step(benchmark::State& state) {
     sim->set_wind_field(field_of_side(static_cast<std::uint32_t>(state.range(0))));
     sim->run(60); // initialised and developing
     for (auto _ : state) {
-        wind_field_system(sim->world());
+        wind_field_system(InternalAccess::world(*sim));
     }
     const auto cells = static_cast<double>(state.range(0) * state.range(0) * (state.range(0) / 4));
     state.counters["cells"] = cells;
-    state.counters["ns_per_cell"] = benchmark::Counter(
-        cells * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_cell"] =
+        benchmark::Counter(cells * static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void integrate_in_field(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
                   static_cast<unsigned>(state.range(1)));
-    bw.sim->set_wind_field(field_of_side(static_cast<std::uint32_t>(std::getenv("SIDE") ? std::atoi(std::getenv("SIDE")) : 64)));
-    wind_field_system(bw.sim->world()); // the first step fills the field
+    bw.sim->set_wind_field(field_of_side(64));
+    wind_field_system(InternalAccess::world(*bw.sim)); // the first step fills the field
     bw.start = bw.sim->save();
     std::uint64_t i = 0;
     for (auto _ : state) {
         const std::uint32_t alive = bw.sim->flakes().alive;
-        integrate_system(bw.sim->world());
+        integrate_system(InternalAccess::world(*bw.sim));
         bw.step_done(state, i, alive);
     }
     report_per_flake(state, bw);

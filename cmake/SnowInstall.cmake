@@ -1,15 +1,99 @@
 # cmake --install exports snowConfig.cmake so `find_package(snow)` gives
-# snow::ecs, snow::sim and, when built, snow::render and snow::scene.
+# snow::sim and, when built, snow::scene and snow::render (snow::ecs comes
+# along as their dependency). The public API is three headers:
+#   <snow/snow.hpp>    snow::sim     the Simulation (no GL)
+#   <snow/scene.hpp>   snow::scene   glTF scene loading (no GL)
+#   <snow/render.hpp>  snow::render  the renderer and its GL contexts
+# Only they and the headers they include are installed; every other header
+# (collider_grid, jobs, validation, sample_scenes, the render passes, ...)
+# stays in the source tree.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(SNOW_EXPORTED snow_ecs snow_sim)
-set(SNOW_HEADER_DIRS ecs systems)
-foreach(t snow_render snow_scene)
-    if(TARGET ${t})
-        list(APPEND SNOW_EXPORTED ${t})
+# The headers each public header reaches, listed so a new include is a
+# visible change here; snow_check_header_closure() fails the configure step
+# when an include was added or dropped without updating these lists.
+set(SNOW_SIM_HEADERS
+    include/snow/snow.hpp
+    ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
+    ecs/world.hpp
+    systems/body.hpp systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp
+    systems/fog.hpp systems/geometry.hpp systems/mass_ledger.hpp systems/occlusion.hpp
+    systems/sim_config.hpp systems/sim_counters.hpp systems/simulation.hpp
+    systems/simulation_error.hpp systems/snapshot.hpp systems/snow_cover.hpp
+    systems/snow_surface.hpp systems/spectral_snow.hpp systems/units.hpp systems/wind.hpp)
+set(SNOW_SCENE_HEADERS
+    include/snow/scene.hpp
+    game/scene/scene_loader.hpp render/scene_visuals.hpp)
+set(SNOW_RENDER_HEADERS
+    include/snow/render.hpp
+    render/camera.hpp render/frame_timings.hpp render/gl_context.hpp render/glfw_context.hpp
+    render/image.hpp render/osmesa_context.hpp render/render_error.hpp render/render_pass.hpp
+    render/render_settings.hpp render/renderer.hpp render/scene_visuals.hpp render/shader.hpp)
+
+# Every header reachable from `root` through #include "dir/file.hpp" (paths
+# from the source root) and #include <snow/file.hpp>.
+function(snow_header_closure root out)
+    set(todo ${root})
+    set(seen)
+    while(todo)
+        list(POP_FRONT todo header)
+        if(header IN_LIST seen)
+            continue()
+        endif()
+        list(APPEND seen ${header})
+        set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+                     ${PROJECT_SOURCE_DIR}/${header})
+        file(STRINGS ${PROJECT_SOURCE_DIR}/${header} lines REGEX "^#include [\"<]")
+        foreach(line ${lines})
+            if(line MATCHES "^#include \"([^\"]+)\"")
+                list(APPEND todo ${CMAKE_MATCH_1})
+            elseif(line MATCHES "^#include <(snow/[^>]+)>")
+                list(APPEND todo include/${CMAKE_MATCH_1})
+            endif()
+        endforeach()
+    endwhile()
+    set(${out} ${seen} PARENT_SCOPE)
+endfunction()
+
+# Fails when the headers `root` reaches differ from the list `listed`, or
+# when `forbidden` (a regex) matches one of them.
+function(snow_check_header_closure root listed forbidden)
+    snow_header_closure(${root} reached)
+    set(missing ${reached})
+    list(REMOVE_ITEM missing ${${listed}})
+    set(stale ${${listed}})
+    list(REMOVE_ITEM stale ${reached})
+    if(missing OR stale)
+        message(FATAL_ERROR "cmake/SnowInstall.cmake: ${listed} is out of date for ${root}: "
+                            "add [${missing}], remove [${stale}]")
     endif()
-endforeach()
+    foreach(header ${reached})
+        if(forbidden AND header MATCHES "${forbidden}")
+            message(FATAL_ERROR "${root} reaches ${header}: it would need what that layer "
+                                "links (e.g. GL) in every embedder of its target")
+        endif()
+    endforeach()
+endfunction()
+
+# Exports `target` (when built) with its public header `root`, which reaches
+# snow::sim's headers and those listed in `listed`, and never `forbidden`.
+set(SNOW_EXPORTED snow_ecs)
+set(SNOW_INSTALLED_HEADERS)
+function(snow_public_target target root listed forbidden)
+    if(NOT TARGET ${target})
+        return()
+    endif()
+    set(reached ${SNOW_SIM_HEADERS} ${${listed}})
+    list(REMOVE_DUPLICATES reached)
+    snow_check_header_closure(${root} reached "${forbidden}")
+    set(SNOW_EXPORTED ${SNOW_EXPORTED} ${target} PARENT_SCOPE)
+    set(SNOW_INSTALLED_HEADERS ${SNOW_INSTALLED_HEADERS} ${reached} PARENT_SCOPE)
+endfunction()
+snow_public_target(snow_sim include/snow/snow.hpp SNOW_SIM_HEADERS "^(render|game)/")
+snow_public_target(snow_scene include/snow/scene.hpp SNOW_SCENE_HEADERS "^render/.*(context|renderer)")
+snow_public_target(snow_render include/snow/render.hpp SNOW_RENDER_HEADERS "^game/")
+list(REMOVE_DUPLICATES SNOW_INSTALLED_HEADERS)
 
 foreach(t ${SNOW_EXPORTED})
     string(REPLACE "snow_" "" export_name ${t})
@@ -18,26 +102,14 @@ endforeach()
 
 install(TARGETS ${SNOW_EXPORTED} EXPORT snowTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
-foreach(dir ${SNOW_HEADER_DIRS})
-    install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir}
-            FILES_MATCHING PATTERN "*.hpp")
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# include/snow/x.hpp goes to <prefix>/include/snow/x.hpp; an internal dir/x.hpp
+# to <prefix>/include/snow/dir/x.hpp, where the public headers' quoted includes find it.
+foreach(header ${SNOW_INSTALLED_HEADERS})
+    get_filename_component(dir ${header} DIRECTORY)
+    string(REGEX REPLACE "^include/snow" "" dir ${dir})
+    install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir})
 endforeach()
-# snow::render's public headers; the pass internals include glad and stay private.
-if(TARGET snow_render)
-    install(FILES render/camera.hpp render/frame_timings.hpp render/gl_context.hpp
-                  render/image.hpp render/render_error.hpp render/render_pass.hpp
-                  render/render_settings.hpp render/renderer.hpp render/shader.hpp
-                  render/osmesa_context.hpp render/glfw_context.hpp
-            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/render)
-endif()
-# snow::scene's one public header (the scene_*.hpp beside it are internals).
-if(TARGET snow_scene)
-    install(FILES game/scene/scene_loader.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/game/scene)
-endif()
-# The public facade: #include <snow/snow.hpp>
-install(FILES systems/snow.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
 
 install(EXPORT snowTargets NAMESPACE snow:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)
 configure_package_config_file(cmake/snowConfig.cmake.in

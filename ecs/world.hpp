@@ -4,22 +4,16 @@
 
 #include "ecs/component_pool.hpp"
 #include "ecs/entity.hpp"
+#include "ecs/error.hpp"
 #include "ecs/type_id.hpp"
 
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
 
 namespace snow {
-
-/// Thrown for misuse of handles (stale, null) and similar API errors.
-class EcsError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
 
 class World {
   public:

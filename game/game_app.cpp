@@ -2,12 +2,11 @@
 
 #include "game/builtin_scene.hpp"
 #include "game/camera_controller.hpp"
+#include "game/frame_recorder.hpp"
 #include "game/hud.hpp"
 #include "game/quality.hpp"
-#include "render/glfw_context.hpp"
-#include "render/image.hpp"
-#include "render/render_error.hpp"
-#include "render/renderer.hpp"
+
+#include <snow/render.hpp>
 
 #include <GLFW/glfw3.h>
 #include <glm/geometric.hpp>
@@ -19,6 +18,8 @@
 #include <deque>
 #include <filesystem>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace snow {
 
@@ -49,8 +50,11 @@ class Game {
     GameOptions opt_;
     std::size_t quality_;
     std::unique_ptr<Simulation> sim_;
+    SceneVisuals visuals_;
+    FixedStep step_{1.0 / 60.0}; ///< window mode; load() sets it to the scene's dt
     std::unique_ptr<Snapshot> start_;
-    std::optional<Fog> fog_; ///< the scene's fog, kept while toggled off
+    std::optional<Fog> fog_;                ///< the scene's fog, kept while toggled off
+    std::optional<FrameRecorder> recorder_; ///< headless: where frames are written
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<Renderer> renderer_;
     std::unique_ptr<CameraController> camera_;
@@ -63,7 +67,6 @@ class Game {
     bool quit_ = false;
     std::uint64_t frame_ = 0;
     std::uint64_t screenshots_ = 0;
-    double accumulator_ = 0.0;
     double last_mouse_x_ = 0.0, last_mouse_y_ = 0.0;
     float scroll_ = 0.0f;
     float fps_ = 0.0f;
@@ -83,6 +86,8 @@ bool Game::load() {
         return false;
     }
     sim_ = std::move(r.sim);
+    visuals_ = std::move(r.visuals);
+    step_ = FixedStep(sim_->config().dt);
     if (const Fog* f = sim_->world().try_resource<Fog>()) {
         fog_ = *f;
     }
@@ -103,7 +108,7 @@ void Game::say(const std::string& message) {
 }
 
 void Game::apply(Action a) {
-    World& w = sim_->world();
+    const World& w = sim_->world();
     switch (a) {
     case Action::pause:
         paused_ = !paused_;
@@ -123,11 +128,15 @@ void Game::apply(Action a) {
     case Action::rate_up:
     case Action::rate_down: {
         const float factor = a == Action::rate_up ? 1.5f : 1.0f / 1.5f;
-        float rate = 0.0f;
-        w.each<Emitter>([&](Entity, Emitter& e) {
-            e.rate = std::clamp(e.rate * factor, 10.0f, 1.0e6f);
-            rate = e.rate;
+        std::vector<std::pair<Entity, float>> rates;
+        w.each<Emitter>([&](Entity e, const Emitter& em) {
+            rates.emplace_back(e, std::clamp(em.rate * factor, 10.0f, 1.0e6f));
         });
+        float rate = 0.0f;
+        for (const auto& [emitter, new_rate] : rates) {
+            sim_->set_emitter_rate(emitter, new_rate);
+            rate = new_rate;
+        }
         say("snowfall " + std::to_string(static_cast<int>(rate)) + " flakes/s");
         break;
     }
@@ -151,7 +160,7 @@ void Game::apply(Action a) {
         if (!fog_) {
             say("this scene declares no fog");
         } else if (w.has_resource<Fog>()) {
-            w.erase_resource<Fog>();
+            sim_->clear_fog();
             say("fog off");
         } else {
             sim_->set_fog(*fog_);
@@ -209,22 +218,13 @@ void Game::advance(double seconds) {
     if (paused_) {
         return;
     }
-    const double dt = sim_->config().dt;
     if (!window_) {
         // Headless frames are 1/30 s of simulated time each, whatever the wall clock.
+        const double dt = sim_->config().dt;
         sim_->run(static_cast<std::uint64_t>(std::max(1l, std::lround(1.0 / (30.0 * dt)))));
         return;
     }
-    accumulator_ += seconds;
-    int ticks = 0;
-    while (accumulator_ >= dt && ticks < 8) { // cap: a slow frame never spirals
-        sim_->tick();
-        accumulator_ -= dt;
-        ++ticks;
-    }
-    if (ticks == 8) {
-        accumulator_ = 0.0;
-    }
+    sim_->run(step_.advance(seconds));
 }
 
 void Game::frame_output() {
@@ -238,11 +238,8 @@ void Game::frame_output() {
         context_->swap_buffers();
         return;
     }
-    if (!opt_.out_dir.empty()) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%05llu.png",
-                      static_cast<unsigned long long>(frame_));
-        write_png(std::filesystem::path(opt_.out_dir) / name, renderer_->read_pixels());
+    if (recorder_) {
+        recorder_->write(renderer_->read_pixels());
     }
     if (opt_.frames > 0 && (frame_ + 1) % 30 == 0) {
         const MassReport m = sim_->mass();
@@ -287,14 +284,13 @@ int Game::run() {
         opt_.frames = 120; // headless without a limit would never end
     }
     if (!opt_.out_dir.empty() && !window_) {
-        std::filesystem::create_directories(opt_.out_dir);
+        recorder_.emplace(opt_.out_dir);
     }
     RenderSettings settings;
     settings.lod_distance = quality_presets[quality_].lod_distance;
     settings.flake_lod = quality_presets[quality_].lod;
     renderer_ = std::make_unique<Renderer>(*context_, settings);
-    const CameraDef def =
-        sim_->world().has_resource<CameraDef>() ? sim_->world().resource<CameraDef>() : CameraDef{};
+    const CameraDef& def = visuals_.camera;
     camera_ = std::make_unique<CameraController>(ViewCamera::from_def(def), def.target);
     std::printf("snow_game: %s, %s (%s)\n", window_ ? "window" : "headless",
                 renderer_->gl_description().c_str(), std::string(context_->name()).c_str());
@@ -334,13 +330,10 @@ int Game::run() {
             read_window_input(static_cast<float>(seconds));
         }
         advance(seconds);
-        renderer_->render(sim_->world(), camera_->camera());
+        renderer_->render(sim_->world(), visuals_, camera_->camera());
         if (screenshot_requested_) {
             screenshot_requested_ = false;
-            std::filesystem::create_directories("screenshots");
-            const std::string path = "screenshots/snow_" + std::to_string(screenshots_++) + ".png";
-            write_png(path, renderer_->read_pixels());
-            say("screenshot " + std::filesystem::absolute(path).string());
+            say("screenshot " + save_screenshot(renderer_->read_pixels(), screenshots_++));
         }
         frame_output();
         ++frame_;
@@ -358,15 +351,13 @@ int Game::run() {
         static_cast<unsigned long long>(sim_->tick_count()),
         static_cast<unsigned long long>(m.spawned), static_cast<unsigned long long>(m.airborne),
         static_cast<unsigned long long>(m.settled), static_cast<unsigned long long>(m.removed));
-    if (!window_ && !opt_.out_dir.empty()) {
-        std::printf("snow_game: wrote %llu frames to %s\n", static_cast<unsigned long long>(frame_),
-                    std::filesystem::absolute(opt_.out_dir).c_str());
-        if (opt_.video && std::system("command -v ffmpeg >/dev/null 2>&1") == 0) {
-            const std::string dir = opt_.out_dir;
-            const std::string cmd = "ffmpeg -loglevel error -y -framerate 30 -i '" + dir +
-                                    "/frame_%05d.png' -pix_fmt yuv420p '" + dir + "/snow.mp4'";
-            if (std::system(cmd.c_str()) == 0) {
-                std::printf("snow_game: video %s/snow.mp4\n", dir.c_str());
+    if (recorder_) {
+        std::printf("snow_game: wrote %llu frames to %s\n",
+                    static_cast<unsigned long long>(recorder_->frames()),
+                    std::filesystem::absolute(recorder_->dir()).c_str());
+        if (opt_.video) {
+            if (const auto video = recorder_->encode_video()) {
+                std::printf("snow_game: video %s\n", video->c_str());
             }
         }
     }

@@ -4,7 +4,8 @@
 #pragma once
 
 #include "game/game_input.hpp"
-#include "game/scene/scene_loader.hpp"
+
+#include <snow/scene.hpp>
 
 #include <cstdint>
 #include <optional>

@@ -2,7 +2,7 @@
 /// @brief The view camera: position, yaw/pitch and a perspective lens.
 #pragma once
 
-#include "systems/visuals.hpp"
+#include "render/scene_visuals.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

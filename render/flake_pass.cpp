@@ -6,7 +6,7 @@
 
 namespace snow {
 
-bool FlakePass::wanted(const World& world) const {
+bool FlakePass::wanted(const World& world, const SceneVisuals&) const {
     const FlakePool* pool = world.try_resource<FlakePool>();
     return pool != nullptr && pool->alive > 0;
 }

@@ -15,7 +15,7 @@ namespace snow {
 class FlakePass final : public RenderPass {
   public:
     [[nodiscard]] std::string_view name() const override { return "flakes"; }
-    [[nodiscard]] bool wanted(const World& world) const override;
+    [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
 
   private:

@@ -45,7 +45,7 @@ constexpr std::size_t probe_batch = 1024;
 
 } // namespace
 
-bool FogPuffPass::wanted(const World& world) const {
+bool FogPuffPass::wanted(const World& world, const SceneVisuals&) const {
     const Fog* fog = world.try_resource<Fog>();
     return fog != nullptr && !fog->puffs.empty();
 }

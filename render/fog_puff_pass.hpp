@@ -16,7 +16,7 @@ class FogPuffPass final : public RenderPass {
   public:
     static constexpr std::string_view pass_name = "fog_puffs";
     [[nodiscard]] std::string_view name() const override { return pass_name; }
-    [[nodiscard]] bool wanted(const World& world) const override;
+    [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
 
   private:

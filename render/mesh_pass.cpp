@@ -45,8 +45,8 @@ std::string mesh_problem(const MeshRenderable& mesh, const std::vector<std::uint
 
 } // namespace
 
-bool MeshPass::wanted(const World& world) const {
-    return world.count<MeshRenderable>() > 0;
+bool MeshPass::wanted(const World&, const SceneVisuals& visuals) const {
+    return !visuals.meshes.empty();
 }
 
 void MeshPass::upload(const MeshRenderable& mesh, GpuMesh& gpu) {
@@ -90,7 +90,7 @@ void MeshPass::upload(const MeshRenderable& mesh, GpuMesh& gpu) {
     gpu.drawable = true;
 }
 
-void MeshPass::run(const World& world, FrameContext& frame) {
+void MeshPass::run(const World&, FrameContext& frame) {
     ++frame_;
     std::vector<std::string> defines = frame.fog_defines;
     if (frame.occlusion) {
@@ -99,8 +99,9 @@ void MeshPass::run(const World& world, FrameContext& frame) {
     const Program& program = frame.programs.get("mesh.vert", "mesh.frag", defines);
     program.use();
     const int albedo = program.uniform("albedo");
-    world.each<MeshRenderable>([&](Entity e, const MeshRenderable& mesh) {
-        GpuMesh& gpu = meshes_[e.bits];
+    for (std::size_t m = 0; m < frame.visuals.meshes.size(); ++m) {
+        const MeshRenderable& mesh = frame.visuals.meshes[m];
+        GpuMesh& gpu = meshes_[m];
         if (gpu.source != mesh.positions.data() || gpu.vertex_count != mesh.positions.size() ||
             gpu.source_index_count != mesh.indices.size()) {
             gpu.source = mesh.positions.data();
@@ -111,12 +112,12 @@ void MeshPass::run(const World& world, FrameContext& frame) {
         }
         gpu.last_frame = frame_;
         if (!gpu.drawable || gpu.index_count == 0) {
-            return;
+            continue;
         }
         glUniform3f(albedo, mesh.color.r, mesh.color.g, mesh.color.b);
         glBindVertexArray(gpu.vao.id());
         glDrawElements(GL_TRIANGLES, gpu.index_count, GL_UNSIGNED_INT, nullptr);
-    });
+    }
     glBindVertexArray(0);
     std::erase_if(meshes_, [&](const auto& entry) { return entry.second.last_frame != frame_; });
 }

@@ -2,14 +2,14 @@
 /// @brief Errors of the renderer: context creation, GL loading, shaders, files.
 #pragma once
 
-#include <stdexcept>
+#include "ecs/error.hpp"
 
 namespace snow {
 
 /// Thrown when a GL context, the GL loader, a GPU resource or an image file fails.
-class RenderError : public std::runtime_error {
+class RenderError : public Error {
   public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 /// Thrown when a shader does not compile or a program does not link; the

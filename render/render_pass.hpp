@@ -7,6 +7,7 @@
 #include "render/camera.hpp"
 #include "render/frame_timings.hpp"
 #include "render/render_settings.hpp"
+#include "render/scene_visuals.hpp"
 #include "render/shader.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -23,6 +24,7 @@ namespace snow {
 /// buffer holds the opaque passes that ran before.
 struct FrameContext {
     const ViewCamera& camera;
+    const SceneVisuals& visuals;
     glm::mat4 view_proj;
     glm::ivec2 viewport;
     const RenderSettings& settings;
@@ -43,9 +45,9 @@ class RenderPass {
     virtual ~RenderPass() = default;
     /// Stable name, used in timings and by insert_pass.
     [[nodiscard]] virtual std::string_view name() const = 0;
-    /// True if the world has something for this pass to draw.
-    [[nodiscard]] virtual bool wanted(const World& world) const = 0;
-    /// Reads the world (never writes it), uploads what changed, draws.
+    /// True if the world or the visuals have something for this pass to draw.
+    [[nodiscard]] virtual bool wanted(const World& world, const SceneVisuals& visuals) const = 0;
+    /// Reads the world and frame.visuals (never writes them), uploads what changed, draws.
     virtual void run(const World& world, FrameContext& frame) = 0;
 };
 

@@ -12,7 +12,6 @@
 #include "render/surface_pass.hpp"
 #include "systems/fog.hpp"
 #include "systems/occlusion.hpp"
-#include "systems/visuals.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -80,8 +79,9 @@ struct Renderer::Impl {
     bool software = false;
     std::string description;
 
-    void fill_block(FrameBlock& b, const World& world, const ViewCamera& camera,
-                    const glm::mat4& view_proj, glm::ivec2 viewport, bool has_occlusion) const;
+    void fill_block(FrameBlock& b, const World& world, const SceneVisuals& visuals,
+                    const ViewCamera& camera, const glm::mat4& view_proj, glm::ivec2 viewport,
+                    bool has_occlusion) const;
     void add_effect_passes(const World& world);
     [[nodiscard]] bool has_pass(std::string_view name) const;
 };
@@ -112,17 +112,16 @@ Renderer::~Renderer() {
     }
 }
 
-void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const ViewCamera& camera,
-                                const glm::mat4& view_proj, glm::ivec2 viewport,
-                                bool has_occlusion) const {
+void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVisuals& visuals,
+                                const ViewCamera& camera, const glm::mat4& view_proj,
+                                glm::ivec2 viewport, bool has_occlusion) const {
     b.view_proj = view_proj;
     b.inv_view_proj = glm::inverse(view_proj);
     b.camera_pos = glm::vec4(camera.position, 1.0f);
     const float tan_half = std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
     b.lens = {static_cast<float>(viewport.y) / (2.0f * tan_half), camera.near_plane,
               camera.far_plane, 0.0f};
-    const Environment env =
-        world.has_resource<Environment>() ? world.resource<Environment>() : Environment{};
+    const Environment& env = visuals.environment;
     b.ambient = glm::vec4(env.ambient, 0.0f);
     b.sky = glm::vec4(env.sky, 0.0f);
     b.snow_color = glm::vec4(settings.snow_color, std::clamp(settings.mesh_snow, 0.0f, 1.0f));
@@ -131,13 +130,13 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const ViewCam
                settings.flake_fade_distance > 0.0f ? 1.0f / settings.flake_fade_distance : 0.0f};
     b.light_params = {non_negative(settings.light_falloff), 0.0f, 0.0f, 0.0f};
     int lights = 0;
-    world.each<PointLight>([&](Entity, const PointLight& l) {
+    for (const PointLight& l : visuals.lights) {
         if (lights < max_point_lights) {
             b.light_pos[lights] = glm::vec4(l.position, l.intensity);
             b.light_color[lights] = glm::vec4(l.color, 0.0f);
             ++lights;
         }
-    });
+    }
     // A scene without lights still shows its shapes: a soft sun from above.
     b.sun = lights == 0 ? glm::vec4(glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)), 0.8f)
                         : glm::vec4(0.0f);
@@ -183,7 +182,7 @@ void Renderer::Impl::add_effect_passes(const World& world) {
     }
 }
 
-void Renderer::render(const World& world, const ViewCamera& camera) {
+void Renderer::render(const World& world, const SceneVisuals& visuals, const ViewCamera& camera) {
     Impl& m = *impl_;
     const Clock::time_point frame_start = Clock::now();
     m.context.make_current();
@@ -205,7 +204,7 @@ void Renderer::render(const World& world, const ViewCamera& camera) {
     const Fog* fog = world.try_resource<Fog>();
 
     FrameBlock block;
-    m.fill_block(block, world, camera, view_proj, viewport, has_occlusion);
+    m.fill_block(block, world, visuals, camera, view_proj, viewport, has_occlusion);
     glBindBuffer(GL_UNIFORM_BUFFER, m.frame_ubo.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, frame_block_binding, m.frame_ubo.id());
@@ -236,13 +235,13 @@ void Renderer::render(const World& world, const ViewCamera& camera) {
     t.passes[0].ran = true;
     t.passes[0].cpu_ms = ms_since(frame_start);
 
-    FrameContext frame{camera,           view_proj,     viewport,   m.settings, m.programs,
-                       fog_defines(fog), has_occlusion, m.software, t};
+    FrameContext frame{camera,     visuals,          view_proj,     viewport,   m.settings,
+                       m.programs, fog_defines(fog), has_occlusion, m.software, t};
     for (std::size_t i = 0; i < m.passes.size(); ++i) {
         RenderPass& pass = *m.passes[i];
         PassTiming& pt = t.passes[i + 1];
         pt.name = pass.name();
-        pt.ran = pass.wanted(world);
+        pt.ran = pass.wanted(world, visuals);
         pt.cpu_ms = 0.0;
         if (!pt.ran) {
             continue;

@@ -1,6 +1,7 @@
 /// @file renderer.hpp
-/// @brief The renderer: draws a World (read only) from a ViewCamera into the
-/// current GlContext, as an ordered list of passes.
+/// @brief The renderer: draws a simulation's World and a scene's visuals
+/// (both read only) from a ViewCamera into the current GlContext, as an
+/// ordered list of passes.
 #pragma once
 
 #include "ecs/world.hpp"
@@ -10,6 +11,7 @@
 #include "render/image.hpp"
 #include "render/render_pass.hpp"
 #include "render/render_settings.hpp"
+#include "render/scene_visuals.hpp"
 
 #include <memory>
 #include <string>
@@ -20,7 +22,7 @@ namespace snow {
 
 /// Create, use and destroy it with `context` current. Passes, in order:
 ///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
-///   "meshes"        MeshRenderable, lit, snow-white where exposed [SKY]
+///   "meshes"        SceneVisuals::meshes, lit, snow-white where exposed [SKY]
 ///   "snow_surfaces" SnowSurface tiled heightfields + skirts [WF §6]
 ///   (far-field spectral snow [LZ]: insert_pass("flakes", ...))
 ///   "flakes"        FlakePool point sprites ([ZCL], [SKY])
@@ -33,8 +35,9 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Draws one frame of `world` into the context's framebuffer (no swap).
-    void render(const World& world, const ViewCamera& camera);
+    /// Draws one frame of `world` (Simulation::world()) and `visuals` (the
+    /// scene loader's meshes, lights and sky) into the context's framebuffer (no swap).
+    void render(const World& world, const SceneVisuals& visuals, const ViewCamera& camera);
     /// Per-pass times and counters of the last render().
     [[nodiscard]] const FrameTimings& timings() const;
     /// The framebuffer as an image, top row first (any backend).

@@ -4,7 +4,7 @@
 
 namespace snow {
 
-bool SkyPass::wanted(const World& world) const {
+bool SkyPass::wanted(const World& world, const SceneVisuals&) const {
     return world.has_resource<Fog>();
 }
 

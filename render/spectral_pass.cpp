@@ -5,6 +5,7 @@
 #include "render/spectral_volume.hpp"
 #include "systems/emitter.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/validation.hpp"
 #include "systems/wind.hpp"
 
 #include <glm/geometric.hpp>
@@ -86,7 +87,7 @@ float particle_fall_speed(const World& world) {
 
 } // namespace
 
-bool SpectralPass::wanted(const World& world) const {
+bool SpectralPass::wanted(const World& world, const SceneVisuals&) const {
     return world.has_resource<SpectralSnow>();
 }
 
@@ -115,9 +116,9 @@ void SpectralPass::build(const SpectralSnow& s, std::uint64_t seed) {
 
 void SpectralPass::run(const World& world, FrameContext& frame) {
     const SpectralSnow& s = world.resource<SpectralSnow>();
-    if (const std::string error = validate(s); !error.empty()) {
+    if (const Invalid error = validate(s); !error.empty()) {
         if (!invalid_reported_) { // said once, like the renderer's other bad-input notes
-            std::fprintf(stderr, "snow: spectral snow not drawn: %s\n", error.c_str());
+            std::fprintf(stderr, "snow: spectral snow not drawn: %s\n", error.text().c_str());
             invalid_reported_ = true;
         }
         return;

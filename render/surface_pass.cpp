@@ -10,7 +10,7 @@
 
 namespace snow {
 
-bool SurfacePass::wanted(const World& world) const {
+bool SurfacePass::wanted(const World& world, const SceneVisuals&) const {
     return world.count<SnowSurface>() > 0;
 }
 

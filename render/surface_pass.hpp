@@ -23,7 +23,7 @@ inline constexpr int surface_cells_unit = 4;
 class SurfacePass final : public RenderPass {
   public:
     [[nodiscard]] std::string_view name() const override { return "snow_surfaces"; }
-    [[nodiscard]] bool wanted(const World& world) const override;
+    [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
 
   private:

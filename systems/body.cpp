@@ -1,21 +1,13 @@
-// Body shapes, validation and the snowball's growth.
+// Body shapes and the snowball's growth (validate(BodyDef) is in validation.cpp).
 #include "systems/body.hpp"
 
 #include "systems/units.hpp"
-#include "systems/validation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace snow {
-
-namespace {
-
-/// Largest body size (m): anything larger is an input error, not a body.
-constexpr double max_body_size = 100.0;
-
-} // namespace
 
 bool Body::depth_below(float dx, float dz, float& depth) const {
     if (shape == BodyShape::box) {
@@ -36,50 +28,6 @@ bool Body::depth_below(float dx, float dz, float& depth) const {
 
 float Body::reach() const {
     return shape == BodyShape::box ? std::max(half_extents.x, half_extents.z) : radius;
-}
-
-std::string validate(const BodyMotion& m) {
-    std::string e;
-    if (m.waypoints.empty()) {
-        e = "motion.waypoints must hold at least one point (got none)";
-    }
-    for (std::size_t i = 0; i < m.waypoints.size() && e.empty(); ++i) {
-        check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
-    }
-    check::non_negative(e, "motion.speed", m.speed);
-    check::at_most(e, "motion.speed", m.speed, 1000.0);
-    return e;
-}
-
-std::string validate(const BodyDef& d) {
-    std::string e;
-    if (d.shape != BodyShape::sphere && d.shape != BodyShape::box &&
-        d.shape != BodyShape::capsule) {
-        check::fail(e, "body.shape", "sphere, box or capsule", static_cast<double>(d.shape));
-    }
-    check::finite3(e, "body.position", d.position);
-    if (d.shape == BodyShape::box) {
-        check::positive(e, "body.half_extents.x", d.half_extents.x);
-        check::positive(e, "body.half_extents.y", d.half_extents.y);
-        check::positive(e, "body.half_extents.z", d.half_extents.z);
-        check::at_most(e, "body.half_extents (largest)",
-                       std::max({d.half_extents.x, d.half_extents.y, d.half_extents.z}),
-                       max_body_size);
-    } else {
-        check::positive(e, "body.radius", d.radius);
-        check::at_most(e, "body.radius", d.radius, max_body_size);
-    }
-    if (d.shape == BodyShape::capsule) {
-        check::non_negative(e, "body.half_height", d.half_height);
-        check::at_most(e, "body.half_height", d.half_height, max_body_size);
-    }
-    if (d.snowball && d.shape != BodyShape::sphere) {
-        e = e.empty() ? "body.snowball needs shape sphere" : e;
-    }
-    if (e.empty() && !d.motion.waypoints.empty()) {
-        e = validate(d.motion);
-    }
-    return e;
 }
 
 Body make_body(const BodyDef& d) {

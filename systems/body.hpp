@@ -8,7 +8,6 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace snow {
@@ -25,10 +24,10 @@ struct BodyMotion {
 /// Settings to create a body; see Simulation::add_body().
 struct BodyDef {
     BodyShape shape = BodyShape::sphere;
-    glm::vec3 position{0.0f};     ///< centre (m)
-    float radius = 0.25f;         ///< sphere and capsule radius (m)
+    glm::vec3 position{0.0f};      ///< centre (m)
+    float radius = 0.25f;          ///< sphere and capsule radius (m)
     glm::vec3 half_extents{0.25f}; ///< box half size (m)
-    float half_height = 0.5f;     ///< capsule: half length of its vertical core segment (m)
+    float half_height = 0.5f;      ///< capsule: half length of its vertical core segment (m)
     /// Each tick its lowest point is put on the highest bare ground (surface
     /// or cover base) under its centre, as a walker or a rolling ball; else
     /// its height is its own (path or host).
@@ -69,10 +68,6 @@ struct Body {
     [[nodiscard]] float reach() const;
 };
 
-/// Returns an error naming the bad field, or an empty string.
-[[nodiscard]] std::string validate(const BodyDef& def);
-/// Returns an error naming the bad field, or an empty string.
-[[nodiscard]] std::string validate(const BodyMotion& motion);
 /// The body a definition describes, at its position, not moving.
 [[nodiscard]] Body make_body(const BodyDef& def);
 /// A snowball's radius for `units` carried on top of its bare radius.

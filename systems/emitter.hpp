@@ -2,8 +2,6 @@
 /// @brief Where and how flakes are born ([WF §3–4], [ZCL §III]).
 #pragma once
 
-#include <string>
-
 namespace snow {
 
 /// Component. Flakes appear on the top and the upwind sides of the
@@ -17,8 +15,5 @@ struct Emitter {
     float fall_speed_min = 0.5f; ///< terminal speed in still air (m/s); sets k/m = g / v
     float fall_speed_max = 1.5f;
 };
-
-/// Returns an error naming the bad field, or an empty string.
-[[nodiscard]] std::string validate(const Emitter& e);
 
 } // namespace snow

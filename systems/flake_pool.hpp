@@ -3,6 +3,8 @@
 /// stack [ZCL §III.B]: up to millions of flakes, not one entity each.
 #pragma once
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -74,6 +76,16 @@ struct FlakePool {
     void release(std::uint32_t slot);
     /// Sum of mass units of alive flakes (airborne snow).
     [[nodiscard]] std::uint64_t airborne_units() const;
+};
+
+/// One airborne flake placed by hand (Simulation::place_flake): tests,
+/// benchmarks at a fixed load, or an embedder's own emitter.
+struct FlakeSpec {
+    glm::vec3 position{0.0f};
+    glm::vec3 velocity{0.0f};
+    float k_over_m = 9.81f;       ///< drag over mass (1/s); 9.81 falls at 1 m/s in still air
+    float size = 0.01f;           ///< diameter (m), for rendering
+    std::uint32_t mass_units = 1; ///< 1 .. max_flake_units
 };
 
 } // namespace snow

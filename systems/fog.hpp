@@ -6,7 +6,6 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace snow {
@@ -37,7 +36,5 @@ struct Fog {
     float layer_density = 0.15f; ///< layered: peak density (1/m)
     std::vector<FogPuff> puffs;
 };
-
-[[nodiscard]] std::string validate(const Fog& f);
 
 } // namespace snow

@@ -50,27 +50,22 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     return sim;
 }
 
+FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n) {
+    const glm::vec3 lo = config.bounds.min, hi = config.bounds.max;
+    const RngKey k{config.seed, ~0ull, n, random_stream::spawn_position};
+    FlakeSpec f;
+    f.position = {rng_range(k, 0, lo.x, hi.x), rng_range(k, 1, lo.y + 0.5f * (hi.y - lo.y), hi.y),
+                  rng_range(k, 2, lo.z, hi.z)};
+    f.velocity = {0.0f, -1.0f, 0.0f};
+    f.mass_units = 1 + rng_below(k, 3, 40);
+    return f;
+}
+
 void prefill_flakes(Simulation& sim, std::uint32_t count) {
-    const SimConfig& cfg = sim.config();
-    FlakePool& f = sim.world().resource<FlakePool>();
-    auto& ledger = sim.world().resource<MassLedger>();
-    const glm::vec3 lo = cfg.bounds.min, hi = cfg.bounds.max;
     for (std::uint32_t n = 0; n < count; ++n) {
-        std::uint32_t slot = 0;
-        if (!f.acquire(slot)) {
+        if (!sim.place_flake(prefill_flake(sim.config(), n))) {
             return;
         }
-        const RngKey k{cfg.seed, ~0ull, slot, random_stream::spawn_position};
-        f.px[slot] = rng_range(k, 0, lo.x, hi.x);
-        f.py[slot] = rng_range(k, 1, lo.y + 0.5f * (hi.y - lo.y), hi.y);
-        f.pz[slot] = rng_range(k, 2, lo.z, hi.z);
-        f.vx[slot] = 0.0f;
-        f.vy[slot] = -1.0f;
-        f.vz[slot] = 0.0f;
-        f.k_over_m[slot] = 9.81f;
-        f.size[slot] = 0.01f;
-        f.mass_units[slot] = 1 + rng_below(k, 3, 40);
-        ledger.spawned += f.mass_units[slot];
     }
 }
 

@@ -27,8 +27,12 @@ struct YardOptions {
 /// roof, a sphere (snowman), steady wind along +x, an emitter.
 [[nodiscard]] std::unique_ptr<Simulation> make_yard(const YardOptions& o = {});
 
-/// Places `count` airborne flakes uniformly in the upper part of the bounds
-/// (deterministic in the seed); for benchmarks at a fixed flake count.
+/// Flake number `n` of prefill_flakes: uniform in the upper half of the
+/// bounds, falling at 1 m/s, mass and place deterministic in the seed.
+[[nodiscard]] FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n);
+
+/// Places `count` airborne flakes (prefill_flake 0, 1, ...) until the pool is
+/// full; for benchmarks at a fixed flake count.
 void prefill_flakes(Simulation& sim, std::uint32_t count);
 
 } // namespace snow

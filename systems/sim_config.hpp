@@ -37,9 +37,6 @@ struct SimConfig {
     std::uint32_t smoothing_iterations = 64;
 };
 
-/// Returns an error message naming the bad field, or an empty string.
-[[nodiscard]] std::string validate(const SimConfig& c);
-
 struct SimClock {
     std::uint64_t tick = 0; ///< ticks completed
 };

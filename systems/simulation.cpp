@@ -1,23 +1,21 @@
 #include "systems/simulation.hpp"
 
+#include "ecs/job_pool.hpp"
 #include "ecs/state_hash.hpp"
+#include "systems/colliders.hpp"
 #include "systems/jobs.hpp"
+#include "systems/systems.hpp"
 #include "systems/validation.hpp"
 #include "systems/wind_field_solver.hpp"
 
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 namespace snow {
 
 namespace {
-
-void throw_if(const std::string& error) {
-    if (!error.empty()) {
-        throw SnowError(error);
-    }
-}
 
 /// Every component T with its entity, in pool order (Simulation::save).
 template <typename T>
@@ -32,8 +30,8 @@ void require_components(const World& w, const std::vector<std::pair<Entity, T>>&
                         const char* what) {
     for (const auto& [e, c] : saved) {
         if (!w.has<T>(e)) {
-            throw SnowError(std::string("restore: snapshot belongs to a different scene (") +
-                            what + " missing)");
+            throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
+                                  what + " missing)");
         }
     }
 }
@@ -52,6 +50,17 @@ bool flakes_alive(const World& w) {
 bool same_grid(const WindField& a, const WindField& b) {
     return a.n[0] == b.n[0] && a.n[1] == b.n[1] && a.n[2] == b.n[2] && a.origin == b.origin &&
            a.inv_cell == b.inv_cell;
+}
+
+/// The T of entity `e`; throws SimulationError naming `field` when `e` is
+/// stale, null or has no T (`kind` says what it should have been).
+template <typename T, typename W>
+auto& component_of(W& world, Entity e, const std::string& field, const char* kind) {
+    auto* c = world.alive(e) ? world.template try_get<T>(e) : nullptr;
+    if (c == nullptr) {
+        throw SimulationError(field, std::string("is not a living ") + kind);
+    }
+    return *c;
 }
 
 } // namespace
@@ -99,6 +108,14 @@ Entity Simulation::add_emitter(const Emitter& e) {
     return id;
 }
 
+void Simulation::set_emitter_rate(Entity emitter, float rate) {
+    Emitter& e = component_of<Emitter>(world_, emitter, "set_emitter_rate(emitter)", "emitter");
+    Emitter changed = e;
+    changed.rate = rate;
+    throw_if(validate(changed));
+    e = changed;
+}
+
 void Simulation::set_wind(const Wind& w) {
     throw_if(validate(w));
     world_.set_resource<Wind>(w);
@@ -121,11 +138,9 @@ void Simulation::clear_wind_field() {
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null() && !world_.alive(owner)) {
-        throw SnowError("surface owner is not a living entity");
+        throw SimulationError("add_surface(owner)", "is not a living entity");
     }
-    std::string error;
-    SnowSurface surface = make_surface(def, error);
-    throw_if(error);
+    SnowSurface surface = make_surface(def);
     const Entity id = world_.create();
     world_.add<SnowSurface>(id, std::move(surface));
     world_.add<SurfaceOf>(id, SurfaceOf{owner});
@@ -137,9 +152,7 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
 }
 
 Entity Simulation::add_cover(const CoverDef& def) {
-    std::string error;
-    SnowSurface surface = make_cover_surface(def, error);
-    throw_if(error);
+    SnowSurface surface = make_cover_surface(def);
     const Entity id = world_.create();
     world_.add<SnowSurface>(id, std::move(surface));
     SnowCover cover;
@@ -155,40 +168,32 @@ Entity Simulation::add_body(const BodyDef& def) {
     return id;
 }
 
-Body& Simulation::body_for(Entity e, const char* call) {
-    Body* b = world_.alive(e) ? world_.try_get<Body>(e) : nullptr;
-    if (b == nullptr) {
-        throw SnowError(std::string(call) + ": entity is not a living body");
-    }
-    return *b;
-}
-
 void Simulation::move_body(Entity e, const glm::vec3& position) {
-    std::string err;
+    Invalid err;
     check::finite3(err, "move_body.position", position);
     throw_if(err);
-    Body& b = body_for(e, "move_body");
+    Body& b = component_of<Body>(world_, e, "move_body(body)", "body");
     b.target = position;
     b.has_target = true;
 }
 
 void Simulation::set_body_velocity(Entity e, const glm::vec3& velocity) {
-    std::string err;
+    Invalid err;
     check::finite3(err, "set_body_velocity.velocity", velocity);
     throw_if(err);
-    body_for(e, "set_body_velocity").velocity = velocity;
+    component_of<Body>(world_, e, "set_body_velocity(body)", "body").velocity = velocity;
 }
 
 void Simulation::set_body_motion(Entity e, const BodyMotion& motion) {
     throw_if(validate(motion));
-    Body& b = body_for(e, "set_body_motion");
+    Body& b = component_of<Body>(world_, e, "set_body_motion(body)", "body");
     b.motion = motion;
     b.segment = 0;
     b.along = 0.0f;
 }
 
 std::uint64_t Simulation::drop_snowball(Entity e) {
-    Body& b = body_for(e, "drop_snowball");
+    Body& b = component_of<Body>(world_, e, "drop_snowball(body)", "body");
     if (b.carried == 0) {
         return 0;
     }
@@ -204,7 +209,7 @@ std::uint64_t Simulation::drop_snowball(Entity e) {
         }
     });
     if (best == nullptr) {
-        throw SnowError("drop_snowball: no snow surface or cover under the body");
+        throw SimulationError("drop_snowball(body)", "has no snow surface or cover under it");
     }
     const std::uint64_t room = std::numeric_limits<std::uint32_t>::max() - best->snow[cell];
     const std::uint64_t units = std::min(b.carried, room);
@@ -217,21 +222,27 @@ std::uint64_t Simulation::drop_snowball(Entity e) {
 }
 
 Entity Simulation::add_box(const Aabb& box) {
-    std::string e;
-    check::finite3(e, "box.min", box.min);
-    check::finite3(e, "box.max", box.max);
-    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
-    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
-    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
-    throw_if(e);
+    throw_if(validate(box));
     const Entity id = world_.create();
     world_.add<BoxCollider>(id, BoxCollider{box});
     bump_geometry();
     return id;
 }
 
+void Simulation::move_box(Entity box_collider, const Aabb& box) {
+    BoxCollider& c =
+        component_of<BoxCollider>(world_, box_collider, "move_box(box_collider)", "box collider");
+    if (world_.has<SnowHolder>(box_collider)) {
+        throw SimulationError("move_box(box_collider)",
+                              "carries a snow surface, which cannot move with it");
+    }
+    throw_if(validate(box));
+    c.box = box;
+    bump_geometry();
+}
+
 Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
-    std::string e;
+    Invalid e;
     check::finite3(e, "sphere.center", center);
     check::positive(e, "sphere.radius", radius);
     throw_if(e);
@@ -242,7 +253,7 @@ Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
 }
 
 Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
-    std::string e;
+    Invalid e;
     if (triangles.empty() || triangles.size() % 3 != 0) {
         check::fail(e, "mesh.triangles (vertex count)", "a positive multiple of 3",
                     static_cast<double>(triangles.size()));
@@ -262,7 +273,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
 }
 
 void Simulation::set_occlusion(const OcclusionCamera& cam) {
-    std::string e;
+    Invalid e;
     if (cam.resolution < 1 || cam.resolution > 4096) {
         check::fail(e, "occlusion.resolution", "in [1, 4096]", cam.resolution);
     }
@@ -278,6 +289,10 @@ void Simulation::set_fog(const Fog& fog) {
     world_.set_resource<Fog>(fog);
 }
 
+void Simulation::clear_fog() {
+    world_.erase_resource<Fog>();
+}
+
 void Simulation::set_spectral(const SpectralSnow& s) {
     throw_if(validate(s));
     world_.set_resource<SpectralSnow>(s);
@@ -285,7 +300,7 @@ void Simulation::set_spectral(const SpectralSnow& s) {
 
 void Simulation::remove(Entity e) {
     if (!world_.alive(e)) {
-        throw SnowError("remove: stale or null entity handle");
+        throw SimulationError("remove(entity)", "is a stale or null handle");
     }
     auto& ledger = world_.resource<MassLedger>();
     // Surfaces lying on a removed solid go with it; their snow leaves the books as removed.
@@ -305,6 +320,60 @@ void Simulation::remove(Entity e) {
         world_.destroy(d);
     }
     bump_geometry();
+}
+
+std::optional<std::uint32_t> Simulation::place_flake(const FlakeSpec& flake) {
+    throw_if(validate(flake));
+    FlakePool& f = world_.resource<FlakePool>();
+    std::uint32_t slot = 0;
+    if (!f.acquire(slot)) {
+        return std::nullopt;
+    }
+    f.px[slot] = flake.position.x;
+    f.py[slot] = flake.position.y;
+    f.pz[slot] = flake.position.z;
+    f.vx[slot] = flake.velocity.x;
+    f.vy[slot] = flake.velocity.y;
+    f.vz[slot] = flake.velocity.z;
+    f.k_over_m[slot] = flake.k_over_m;
+    f.size[slot] = flake.size;
+    f.mass_units[slot] = flake.mass_units;
+    world_.resource<MassLedger>().spawned += flake.mass_units;
+    return slot;
+}
+
+void Simulation::add_settled_snow(Entity surface, std::uint32_t ix, std::uint32_t iz,
+                                  std::uint32_t units) {
+    SnowSurface& s =
+        component_of<SnowSurface>(world_, surface, "add_settled_snow(surface)", "snow surface");
+    Invalid e;
+    if (ix >= s.nx) {
+        check::fail(e, "add_settled_snow(ix)", "< " + std::to_string(s.nx), ix);
+    }
+    if (iz >= s.nz) {
+        check::fail(e, "add_settled_snow(iz)", "< " + std::to_string(s.nz), iz);
+    }
+    if (units == 0) {
+        check::fail(e, "add_settled_snow(units)", ">= 1", units);
+    }
+    if (e.empty() && units > max_cell_units - s.snow[s.index(ix, iz)]) {
+        check::fail(e, "add_settled_snow(units)",
+                    "at most " + std::to_string(max_cell_units - s.snow[s.index(ix, iz)]) +
+                        " (a cell may reach " + std::to_string(max_cell_units) + ")",
+                    units);
+    }
+    throw_if(e);
+    s.snow[s.index(ix, iz)] += units;
+    s.mark_dirty(ix, iz);
+    world_.resource<MassLedger>().spawned += units;
+}
+
+const SnowSurface& Simulation::surface(Entity surface) const {
+    return component_of<SnowSurface>(world_, surface, "surface(entity)", "snow surface");
+}
+
+const Body& Simulation::body(Entity body) const {
+    return component_of<Body>(world_, body, "body(entity)", "body");
 }
 
 void Simulation::set_integrator(Integrator i) {
@@ -438,7 +507,8 @@ void Simulation::restore(const Snapshot& s) {
         world_.erase_resource<Wind>();
     }
     if (s.wind_field) {
-        if (const auto* f = world_.try_resource<WindField>(); f == nullptr || !same_grid(*f, *s.wind_field)) {
+        if (const auto* f = world_.try_resource<WindField>();
+            f == nullptr || !same_grid(*f, *s.wind_field)) {
             world_.erase_resource<WindFieldSolver>(); // obstacles are re-marked for its grid
         }
         world_.set_resource<WindField>(*s.wind_field);

@@ -1,53 +1,50 @@
 /// @file simulation.hpp
 /// @brief The Simulation: a World, its Schedule and a job pool. The one
-/// object an embedder creates (no GL needed).
+/// object an embedder creates (no GL needed), and the only writer of its
+/// World: every change goes through a validated call below.
 #pragma once
 
-#include "ecs/job_pool.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "systems/body.hpp"
-#include "systems/colliders.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/fog.hpp"
+#include "systems/geometry.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/sim_counters.hpp"
+#include "systems/simulation_error.hpp"
 #include "systems/snapshot.hpp"
 #include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/spectral_snow.hpp"
-#include "systems/systems.hpp"
-#include "systems/visuals.hpp"
 #include "systems/wind.hpp"
 #include "systems/wind_field.hpp"
 
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
-#include <string>
+#include <optional>
 #include <vector>
 
 namespace snow {
 
-/// Thrown for invalid arguments (NaN, negative sizes, ...); the message names
-/// the field. The simulation is left exactly as it was.
-class SnowError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
+class JobPool;
 
+/// Every call that takes user values validates them first and throws
+/// SimulationError naming the field; a call that throws changes nothing.
 class Simulation {
   public:
-    /// Throws SnowError if the config is invalid.
     explicit Simulation(const SimConfig& config = {});
     ~Simulation();
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
 
-    // -- building the scene (each validates and throws SnowError) --
+    // -- building the scene --
     Entity add_emitter(const Emitter& e);
+    /// Changes one emitter's rate (flakes per second), same rules as Emitter::rate.
+    void set_emitter_rate(Entity emitter, float rate);
     void set_wind(const Wind& w);
     void clear_wind();
     /// A wind field over the bounds that the colliders shape; the global wind
@@ -76,6 +73,9 @@ class Simulation {
     /// Puts a snowball's snow back on the cell under it; returns the units.
     std::uint64_t drop_snowball(Entity e);
     Entity add_box(const Aabb& box);
+    /// Moves a box collider to `box`. A box that carries a snow surface cannot
+    /// move (its snow would hang in the air): remove it and add a new one.
+    void move_box(Entity box_collider, const Aabb& box);
     Entity add_sphere(const glm::vec3& center, float radius);
     /// A triangle mesh (3 vertices each). Adds a default OcclusionCamera if
     /// there is none: flakes meet meshes through its map, which refreshes at
@@ -83,9 +83,17 @@ class Simulation {
     Entity add_mesh_collider(std::vector<glm::vec3> triangles);
     void set_occlusion(const OcclusionCamera& cam);
     void set_fog(const Fog& fog);
+    void clear_fog();
     void set_spectral(const SpectralSnow& s);
     /// Removes an entity; snow settled on its surfaces counts as removed.
     void remove(Entity e);
+
+    // -- adding snow by hand (its mass is booked as spawned) --
+    /// One airborne flake; returns its pool slot, or nothing when the pool is full.
+    std::optional<std::uint32_t> place_flake(const FlakeSpec& flake);
+    /// `units` of settled snow on cell (ix, iz) of a surface; redistribution
+    /// smooths it from the next tick on.
+    void add_settled_snow(Entity surface, std::uint32_t ix, std::uint32_t iz, std::uint32_t units);
 
     // -- stepping --
     /// Advances exactly one tick of config().dt.
@@ -93,11 +101,15 @@ class Simulation {
     void run(std::uint64_t ticks);
 
     // -- reading --
-    [[nodiscard]] World& world() { return world_; }
+    /// Every component and resource, read only.
     [[nodiscard]] const World& world() const { return world_; }
     [[nodiscard]] const SimConfig& config() const { return world_.resource<SimConfig>(); }
     [[nodiscard]] std::uint64_t tick_count() const { return world_.resource<SimClock>().tick; }
     [[nodiscard]] const FlakePool& flakes() const { return world_.resource<FlakePool>(); }
+    /// The snow surface of a surface entity (depth per cell: snow[i] * unit_height).
+    [[nodiscard]] const SnowSurface& surface(Entity surface) const;
+    /// A moving body as this tick left it (position, radius, snow carried).
+    [[nodiscard]] const Body& body(Entity body) const;
     [[nodiscard]] const Schedule& schedule() const { return schedule_; }
     [[nodiscard]] const SimCounters& counters() const { return world_.resource<SimCounters>(); }
     /// 64-bit hash of the canonical simulation state (flakes, cells, wind, clock).
@@ -106,16 +118,16 @@ class Simulation {
     /// NaN/inf values in flake and wind state (0 for a healthy run).
     [[nodiscard]] std::uint64_t nonfinite_count() const;
 
-    /// Sets the integrator (the rest of the config is fixed at creation);
-    /// throws SnowError for a value outside Integrator.
+    /// Sets the integrator (the rest of the config is fixed at creation).
     void set_integrator(Integrator i);
 
     [[nodiscard]] std::unique_ptr<Snapshot> save() const;
     void restore(const Snapshot& s);
 
   private:
+    friend struct InternalAccess; // systems/internal_access.hpp: tests of single systems
+
     void build_schedule();
-    Body& body_for(Entity e, const char* call);
     void bump_geometry();
 
     World world_;

@@ -30,8 +30,8 @@ constexpr float reappear_height = 1.0e-3f;
 /// Every cell of `cover` whose centre lies on declared surface `t` where t's
 /// bare top is the column's top (within a cell's height): the cover leaves it
 /// to the surface.
-void yield_to_surface(const SnowSurface& cover, const SnowSurface& t,
-                      const std::vector<float>& top, std::vector<std::uint8_t>& owned) {
+void yield_to_surface(const SnowSurface& cover, const SnowSurface& t, const std::vector<float>& top,
+                      std::vector<std::uint8_t>& owned) {
     const double c = cover.cell;
     const double tol = std::max(cover.cell, t.cell);
     const auto first = [&](double lo, double origin) {
@@ -39,15 +39,19 @@ void yield_to_surface(const SnowSurface& cover, const SnowSurface& t,
     };
     const std::int64_t ix0 = std::max<std::int64_t>(0, first(t.x0, cover.x0));
     const std::int64_t iz0 = std::max<std::int64_t>(0, first(t.z0, cover.z0));
-    const std::int64_t ix1 = std::min<std::int64_t>(cover.nx - 1, first(t.x0 + t.nx * t.cell, cover.x0));
-    const std::int64_t iz1 = std::min<std::int64_t>(cover.nz - 1, first(t.z0 + t.nz * t.cell, cover.z0));
+    const std::int64_t ix1 =
+        std::min<std::int64_t>(cover.nx - 1, first(t.x0 + t.nx * t.cell, cover.x0));
+    const std::int64_t iz1 =
+        std::min<std::int64_t>(cover.nz - 1, first(t.z0 + t.nz * t.cell, cover.z0));
     for (std::int64_t iz = iz0; iz <= iz1; ++iz) {
         for (std::int64_t ix = ix0; ix <= ix1; ++ix) {
             const auto x = static_cast<float>(cover.x0 + (ix + 0.5) * c);
             const auto z = static_cast<float>(cover.z0 + (iz + 0.5) * c);
             std::uint32_t tx = 0, tz = 0;
-            const std::size_t i = cover.index(static_cast<std::uint32_t>(ix), static_cast<std::uint32_t>(iz));
-            if (t.cell_at(x, z, tx, tz) && t.height(t.base_level[t.index(tx, tz)]) >= top[i] - tol) {
+            const std::size_t i =
+                cover.index(static_cast<std::uint32_t>(ix), static_cast<std::uint32_t>(iz));
+            if (t.cell_at(x, z, tx, tz) &&
+                t.height(t.base_level[t.index(tx, tz)]) >= top[i] - tol) {
                 owned[i] = 0;
             }
         }
@@ -73,7 +77,8 @@ void target_base(const World& w, const SnowSurface& s, SnowCover& cover,
     out.resize(s.cell_count());
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double level = static_cast<double>(m.top_y[i]) / s.unit_height;
-        out[i] = owned[i] != 0 && std::abs(level) <= max_base_level ? std::llround(level) : void_level;
+        out[i] =
+            owned[i] != 0 && std::abs(level) <= max_base_level ? std::llround(level) : void_level;
     }
     cover.column_top = std::move(m.top_y);
 }
@@ -132,10 +137,11 @@ void derive_edges(SnowSurface& s, SnowCover& cover) {
                     continue;
                 }
                 const std::size_t j = nb[d];
-                const bool shut = here_void || s.is_void(j) ||
-                                  std::abs(s.base_level[i] - s.base_level[j]) > drop;
+                const bool shut =
+                    here_void || s.is_void(j) || std::abs(s.base_level[i] - s.base_level[j]) > drop;
                 s.closed[i] |= shut ? static_cast<std::uint8_t>(1u << d) : 0;
-                const bool falls = !(cover.column_top[j] >= s.height(s.base_level[i]) - cover.drop_limit);
+                const bool falls =
+                    !(cover.column_top[j] >= s.height(s.base_level[i]) - cover.drop_limit);
                 if (!here_void && shut && falls && spill_side < 0) {
                     spill_side = d;
                 }
@@ -152,17 +158,19 @@ void derive_edges(SnowSurface& s, SnowCover& cover) {
 
 } // namespace
 
-SnowSurface make_cover_surface(const CoverDef& def, std::string& error) {
-    std::string e;
+SnowSurface make_cover_surface(const CoverDef& def) {
+    Invalid e;
     check::finite(e, "cover.min.x", def.min_x);
     check::finite(e, "cover.min.z", def.min_z);
     check::finite(e, "cover.max.x", def.max_x);
     check::finite(e, "cover.max.z", def.max_z);
     if (e.empty() && !(def.max_x > def.min_x)) {
-        check::fail(e, "cover.max.x", "> cover.min.x (" + std::to_string(def.min_x) + ")", def.max_x);
+        check::fail(e, "cover.max.x", "> cover.min.x (" + std::to_string(def.min_x) + ")",
+                    def.max_x);
     }
     if (e.empty() && !(def.max_z > def.min_z)) {
-        check::fail(e, "cover.max.z", "> cover.min.z (" + std::to_string(def.min_z) + ")", def.max_z);
+        check::fail(e, "cover.max.z", "> cover.min.z (" + std::to_string(def.min_z) + ")",
+                    def.max_z);
     }
     check::positive(e, "cover.cell", def.cell);
     check::non_negative(e, "cover.edge_limit", def.edge_limit);
@@ -171,17 +179,21 @@ SnowSurface make_cover_surface(const CoverDef& def, std::string& error) {
     check::positive(e, "cover.repose_deg", def.repose_deg);
     check::at_most(e, "cover.repose_deg", def.repose_deg, 89.0);
     if (e.empty()) {
-        const double cells = std::round((static_cast<double>(def.max_x) - def.min_x) / def.cell) *
-                             std::round((static_cast<double>(def.max_z) - def.min_z) / def.cell);
+        const double along_x = std::round((static_cast<double>(def.max_x) - def.min_x) / def.cell);
+        const double along_z = std::round((static_cast<double>(def.max_z) - def.min_z) / def.cell);
+        const double cells = along_x * along_z;
         if (!(cells >= 1.0)) {
             check::fail(e, "cover cells (extent / cell)", ">= 1", cells);
         }
-        check::at_most(e, "cover cells (extent / cell)", cells, static_cast<double>(max_cover_cells));
+        check::at_most(e, "cover cells (extent / cell)", cells,
+                       static_cast<double>(max_cover_cells));
+        // The surface beneath has its own per-side limit; name it in the cover's terms.
+        check::at_most(e, "cover cells along x (extent / cell)", along_x,
+                       max_surface_cells_per_side);
+        check::at_most(e, "cover cells along z (extent / cell)", along_z,
+                       max_surface_cells_per_side);
     }
-    if (!e.empty()) {
-        error = e;
-        return {};
-    }
+    throw_if(e);
     SurfaceDef sd;
     sd.x0 = def.min_x;
     sd.z0 = def.min_z;
@@ -190,12 +202,8 @@ SnowSurface make_cover_surface(const CoverDef& def, std::string& error) {
     sd.cell = def.cell;
     sd.edge_limit = def.edge_limit;
     sd.laplacian_limit = def.laplacian_limit;
-    sd.spills = false; // the rectangle's border is no edge of anything: drops are
-    SnowSurface s = make_surface(sd, error);
-    if (!error.empty()) {
-        error = "cover: " + error;
-        return {};
-    }
+    sd.spills = false; // its border is no edge of anything; a cover spills at its drops
+    SnowSurface s = make_surface(sd);
     const double talus = std::tan(def.repose_deg * std::numbers::pi / 180.0) * def.cell;
     s.talus_units = std::max<std::int64_t>(1, std::llround(talus / s.unit_height));
     std::fill(s.base_level.begin(), s.base_level.end(), void_level);

@@ -8,7 +8,6 @@
 #include "ecs/entity.hpp"
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace snow {
@@ -19,9 +18,9 @@ struct SnowSurface;
 struct CoverDef {
     float min_x = -1.0f, min_z = -1.0f; ///< world rectangle the cover spans (m)
     float max_x = 1.0f, max_z = 1.0f;
-    float cell = 0.1f;             ///< cell edge (m)
-    float edge_limit = 0.02f;      ///< snow depth (m) at a drop above which the excess spills
-    float drop_limit = 0.15f;      ///< a base step (m) larger than this between neighbours is an edge
+    float cell = 0.1f;        ///< cell edge (m)
+    float edge_limit = 0.02f; ///< snow depth (m) at a drop above which the excess spills
+    float drop_limit = 0.15f; ///< a base step (m) larger than this between neighbours is an edge
     float laplacian_limit = 20.0f; ///< cap on |∇²h| of the total height (1/m), [WF §3]
     float repose_deg = 40.0f;      ///< snow on steeper total slopes slides down (degrees)
 };
@@ -46,7 +45,7 @@ struct SnowCover {
 };
 
 /// Builds a cover's surface (every cell void until the cover system first
-/// builds its base); `error` names the bad field for invalid values.
-[[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def, std::string& error);
+/// builds its base); throws SimulationError naming the bad field for invalid values.
+[[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def);
 
 } // namespace snow

@@ -18,7 +18,7 @@ namespace {
 constexpr double max_level = 1.0e15;
 
 /// Cells along one side: size / cell rounded, checked against the grid limits.
-std::uint32_t cells_per_side(std::string& err, const char* field, double size, double cell) {
+std::uint32_t cells_per_side(Invalid& err, const char* field, double size, double cell) {
     const double n = size / cell;
     if (!(n >= 0.5)) {
         check::fail(err, field, ">= 1", n);
@@ -30,8 +30,8 @@ std::uint32_t cells_per_side(std::string& err, const char* field, double size, d
 
 } // namespace
 
-SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
-    std::string e;
+SnowSurface make_surface(const SurfaceDef& def) {
+    Invalid e;
     check::finite(e, "surface.x0", def.x0);
     check::finite(e, "surface.z0", def.z0);
     check::positive(e, "surface.size_x", def.size_x);
@@ -60,11 +60,7 @@ SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
         check::at_most(e, "surface.base_y and slopes (in snow units of this cell size)",
                        reach / unit_height, max_level);
     }
-    if (!e.empty()) {
-        error = e;
-        return {};
-    }
-    error.clear();
+    throw_if(e);
 
     SnowSurface s;
     s.x0 = def.x0;

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <string>
 #include <vector>
 
 namespace snow {
@@ -28,6 +27,10 @@ struct SurfaceDef {
 
 /// Largest grid a surface may have (cells per side); larger is an input error.
 inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
+
+/// Most settled units Simulation::add_settled_snow lets one cell reach: far
+/// above any real pile, and clear of unsigned wrap-around in later landings.
+inline constexpr std::uint32_t max_cell_units = (1u << 31) - 1;
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
 /// so redistribution works where snow changed, whatever the surface's size.
@@ -166,8 +169,8 @@ struct SurfaceOf {
 /// Tag component on a solid (collider entity) that owns at least one surface.
 struct SnowHolder {};
 
-/// Builds a surface from a definition; returns an error naming the bad field
-/// in `error` (and an empty surface) for invalid values.
-[[nodiscard]] SnowSurface make_surface(const SurfaceDef& def, std::string& error);
+/// Builds a surface from a definition; throws SimulationError naming the bad
+/// field for invalid values.
+[[nodiscard]] SnowSurface make_surface(const SurfaceDef& def);
 
 } // namespace snow

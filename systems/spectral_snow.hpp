@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
 namespace snow {
 
@@ -17,7 +16,5 @@ struct SpectralSnow {
     float opacity = 0.6f;         ///< scales α
     float start_distance = 25.0f; ///< where the particle LOD ends
 };
-
-[[nodiscard]] std::string validate(const SpectralSnow& s);
 
 } // namespace snow

@@ -2,23 +2,23 @@
 // def-struct habit): the facade and the scene loader both call these.
 #include "systems/validation.hpp"
 
-#include "systems/emitter.hpp"
-#include "systems/fog.hpp"
-#include "systems/sim_config.hpp"
-#include "systems/spectral_snow.hpp"
 #include "systems/units.hpp"
-#include "systems/wind.hpp"
+
+#include <algorithm>
 
 namespace snow {
 
 namespace {
+/// Largest body size (m): anything larger is an input error, not a body.
+constexpr double max_body_size = 100.0;
+
 bool power_of_two(std::uint32_t v) {
     return v != 0 && (v & (v - 1)) == 0;
 }
 } // namespace
 
-std::string validate(const SimConfig& c) {
-    std::string e;
+Invalid validate(const SimConfig& c) {
+    Invalid e;
     check::positive(e, "simulation.dt", c.dt);
     check::at_most(e, "simulation.dt", c.dt, 1.0);
     check::finite3(e, "simulation.gravity", c.gravity);
@@ -49,8 +49,8 @@ std::string validate(const SimConfig& c) {
     return e;
 }
 
-std::string validate(const Emitter& m) {
-    std::string e;
+Invalid validate(const Emitter& m) {
+    Invalid e;
     check::non_negative(e, "emitter.rate", m.rate);
     check::at_most(e, "emitter.rate", m.rate, 1.0e8);
     const double min_g = unit_kg * 1000.0;
@@ -74,8 +74,31 @@ std::string validate(const Emitter& m) {
     return e;
 }
 
-std::string validate(const Wind& w) {
-    std::string e;
+Invalid validate(const Aabb& box) {
+    Invalid e;
+    check::finite3(e, "box.min", box.min);
+    check::finite3(e, "box.max", box.max);
+    check::ordered(e, "box.min.x", box.min.x, "box.max.x", box.max.x);
+    check::ordered(e, "box.min.y", box.min.y, "box.max.y", box.max.y);
+    check::ordered(e, "box.min.z", box.min.z, "box.max.z", box.max.z);
+    return e;
+}
+
+Invalid validate(const FlakeSpec& f) {
+    Invalid e;
+    check::finite3(e, "flake.position", f.position);
+    check::finite3(e, "flake.velocity", f.velocity);
+    check::positive(e, "flake.k_over_m", f.k_over_m);
+    check::non_negative(e, "flake.size", f.size);
+    if (f.mass_units < 1 || f.mass_units > max_flake_units) {
+        check::fail(e, "flake.mass_units", "in [1, " + std::to_string(max_flake_units) + "]",
+                    f.mass_units);
+    }
+    return e;
+}
+
+Invalid validate(const Wind& w) {
+    Invalid e;
     check::finite3(e, "wind.base", w.base);
     check::finite3(e, "wind.current", w.current);
     check::finite3(e, "wind.deviation", w.deviation);
@@ -91,8 +114,8 @@ std::string validate(const Wind& w) {
     return e;
 }
 
-std::string validate(const Fog& f) {
-    std::string e;
+Invalid validate(const Fog& f) {
+    Invalid e;
     check::finite3(e, "fog.color", f.color);
     check::non_negative(e, "fog.density", f.density);
     check::positive(e, "fog.half_distance", f.half_distance);
@@ -111,8 +134,8 @@ std::string validate(const Fog& f) {
     return e;
 }
 
-std::string validate(const SpectralSnow& s) {
-    std::string e;
+Invalid validate(const SpectralSnow& s) {
+    Invalid e;
     if (!power_of_two(s.size_xy) || s.size_xy < 8 || s.size_xy > 512) {
         check::fail(e, "spectral.size_xy", "a power of two in [8, 512]", s.size_xy);
     }
@@ -127,6 +150,50 @@ std::string validate(const SpectralSnow& s) {
     check::non_negative(e, "spectral.opacity", s.opacity);
     check::at_most(e, "spectral.opacity", s.opacity, 1.0);
     check::non_negative(e, "spectral.start_distance", s.start_distance);
+    return e;
+}
+
+Invalid validate(const BodyMotion& m) {
+    Invalid e;
+    if (m.waypoints.empty()) {
+        e = {"motion.waypoints", "must hold at least one point (got none)"};
+    }
+    for (std::size_t i = 0; i < m.waypoints.size() && e.empty(); ++i) {
+        check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
+    }
+    check::non_negative(e, "motion.speed", m.speed);
+    check::at_most(e, "motion.speed", m.speed, 1000.0);
+    return e;
+}
+
+Invalid validate(const BodyDef& d) {
+    Invalid e;
+    if (d.shape != BodyShape::sphere && d.shape != BodyShape::box &&
+        d.shape != BodyShape::capsule) {
+        check::fail(e, "body.shape", "sphere, box or capsule", static_cast<double>(d.shape));
+    }
+    check::finite3(e, "body.position", d.position);
+    if (d.shape == BodyShape::box) {
+        check::positive(e, "body.half_extents.x", d.half_extents.x);
+        check::positive(e, "body.half_extents.y", d.half_extents.y);
+        check::positive(e, "body.half_extents.z", d.half_extents.z);
+        check::at_most(e, "body.half_extents (largest)",
+                       std::max({d.half_extents.x, d.half_extents.y, d.half_extents.z}),
+                       max_body_size);
+    } else {
+        check::positive(e, "body.radius", d.radius);
+        check::at_most(e, "body.radius", d.radius, max_body_size);
+    }
+    if (d.shape == BodyShape::capsule) {
+        check::non_negative(e, "body.half_height", d.half_height);
+        check::at_most(e, "body.half_height", d.half_height, max_body_size);
+    }
+    if (e.empty() && d.snowball && d.shape != BodyShape::sphere) {
+        e = {"body.snowball", "needs shape sphere"};
+    }
+    if (e.empty() && !d.motion.waypoints.empty()) {
+        e = validate(d.motion);
+    }
     return e;
 }
 

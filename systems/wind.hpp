@@ -3,7 +3,6 @@
 #pragma once
 
 #include <glm/vec3.hpp>
-#include <string>
 
 namespace snow {
 
@@ -19,7 +18,5 @@ struct Wind {
     float gust_duration = 1.5f;          ///< seconds
     float gust_left = 0.0f;              ///< state: seconds of the running gust
 };
-
-[[nodiscard]] std::string validate(const Wind& w);
 
 } // namespace snow

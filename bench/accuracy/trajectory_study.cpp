@@ -5,8 +5,8 @@
 
 #include "bench/accuracy/cpu_clock.hpp"
 #include "systems/integrator.hpp"
+#include "systems/internal_access.hpp"
 #include "systems/sample_scenes.hpp"
-#include "systems/simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -45,24 +45,18 @@ std::uint64_t ticks_for(float seconds, float dt) {
 /// Error columns of one (integrator, dt): flakes start at rest at the origin.
 TrajectoryRow measure_error(const TrajectoryOptions& o, Integrator integrator, float dt) {
     auto sim = make_pool(o, dt, integrator, o.flakes);
-    FlakePool& f = sim->world().resource<FlakePool>();
+    const FlakePool& f = sim->flakes();
     const glm::vec3 g = sim->config().gravity;
     for (std::uint32_t n = 0; n < o.flakes; ++n) {
-        std::uint32_t slot = 0;
-        if (!f.acquire(slot)) {
-            break;
-        }
-        f.px[slot] = f.py[slot] = f.pz[slot] = 0.0f;
-        f.vx[slot] = f.vy[slot] = f.vz[slot] = 0.0f;
-        f.k_over_m[slot] = drag_of(o, -g.y, n);
-        f.size[slot] = 0.01f;
-        f.mass_units[slot] = 1;
+        FlakeSpec flake;
+        flake.k_over_m = drag_of(o, -g.y, n);
+        (void)sim->place_flake(flake);
     }
     TrajectoryRow row{integrator, dt, 0.0, 0.0, 0.0, 0.0, 0.0};
     const std::uint64_t ticks = ticks_for(o.seconds, dt);
     double last_sq = 0.0;
     for (std::uint64_t t = 1; t <= ticks; ++t) {
-        integrate_system(sim->world());
+        integrate_system(InternalAccess::world(*sim));
         // The simulation's own dt (a float) is the step the exact solution follows.
         const double time = static_cast<double>(dt) * static_cast<double>(t);
         last_sq = 0.0;
@@ -92,13 +86,13 @@ TrajectoryRow measure_error(const TrajectoryOptions& o, Integrator integrator, f
 double measure_cost(const TrajectoryOptions& o, Integrator integrator, float dt,
                     std::uint32_t flakes) {
     auto sim = make_pool(o, dt, integrator, flakes);
-    prefill_flakes(*sim, flakes);
-    FlakePool& f = sim->world().resource<FlakePool>();
     const float g = -sim->config().gravity.y;
-    for (std::uint32_t i = 0; i < f.slot_end; ++i) {
-        f.k_over_m[i] = drag_of(o, g, i); // the emitter's spread, so guards trip as in a scene
+    for (std::uint32_t i = 0; i < flakes; ++i) {
+        FlakeSpec flake = prefill_flake(sim->config(), i);
+        flake.k_over_m = drag_of(o, g, i); // the emitter's spread, so guards trip as in a scene
+        (void)sim->place_flake(flake);
     }
-    World& w = sim->world();
+    World& w = InternalAccess::world(*sim);
     for (int i = 0; i < 10; ++i) {
         integrate_system(w); // warm-up: caches, the guard's scratch
     }
@@ -110,7 +104,7 @@ double measure_cost(const TrajectoryOptions& o, Integrator integrator, float dt,
         }
         best = std::min(best, thread_cpu_seconds() - t0);
     }
-    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * f.alive);
+    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * sim->flakes().alive);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // A host engine's loop driving snow at its own frame rate: the simulation
-// ticks at a fixed dt through an accumulator, the host reads flakes and snow
-// depth each frame, adds a collider at run time and checks the mass books.
+// ticks at a fixed dt through snow::FixedStep, the host adds a collider and
+// rolls a snowball at run time, reads flakes, snow depth and the snowball,
+// and checks the mass books. Only <snow/snow.hpp> and snow::sim (no GL).
 #include <snow/snow.hpp>
 
 #include <algorithm>
@@ -30,19 +31,25 @@ int main() {
 
         // The host renders at 144 Hz; the simulation keeps its 60 Hz tick.
         const double frame_dt = 1.0 / 144.0;
-        double accumulator = 0.0;
+        snow::FixedStep step(config.dt);
+        snow::Entity snowball = snow::null_entity;
         for (int frame = 0; frame < 144 * 8; ++frame) {
-            accumulator += frame_dt;
-            while (accumulator >= config.dt) {
-                sim.tick();
-                accumulator -= config.dt;
-            }
+            sim.run(step.advance(frame_dt));
             if (frame == 144 * 2) {
                 sim.add_sphere({0.0f, 1.0f, 0.0f}, 1.0f); // run-time collider
             }
+            if (frame == 144 * 5) { // a snowball rolls across the snow it has by now
+                snow::BodyDef ball;
+                ball.position = {-4.0f, 0.5f, 3.05f}; // on a row of cell centres
+                ball.radius = 0.5f;
+                ball.snowball = true;
+                ball.on_ground = true;
+                snowball = sim.add_body(ball);
+                sim.set_body_velocity(snowball, {2.0f, 0.0f, 0.0f});
+            }
         }
 
-        const auto& surface = sim.world().get<snow::SnowSurface>(ground_id);
+        const snow::SnowSurface& surface = sim.surface(ground_id);
         float deepest = 0.0f;
         for (std::size_t i = 0; i < surface.cell_count(); ++i) {
             deepest = std::max(deepest, surface.snow[i] * surface.unit_height);
@@ -51,17 +58,22 @@ int main() {
         std::printf("embed_snow: %llu ticks, %u flakes airborne, deepest snow %.4f m\n",
                     static_cast<unsigned long long>(sim.tick_count()), sim.flakes().alive,
                     static_cast<double>(deepest));
+        const snow::Body& ball = sim.body(snowball);
+        std::printf("embed_snow: the snowball picked up %llu units on its way to x = %.2f m\n",
+                    static_cast<unsigned long long>(ball.carried),
+                    static_cast<double>(ball.position.x));
         std::printf(
             "embed_snow: mass units spawned %llu = airborne %llu + settled %llu + "
-            "removed %llu, state hash %016llx\n",
+            "carried %llu + removed %llu, state hash %016llx\n",
             static_cast<unsigned long long>(m.spawned), static_cast<unsigned long long>(m.airborne),
-            static_cast<unsigned long long>(m.settled), static_cast<unsigned long long>(m.removed),
+            static_cast<unsigned long long>(m.settled), static_cast<unsigned long long>(m.carried),
+            static_cast<unsigned long long>(m.removed),
             static_cast<unsigned long long>(sim.state_hash()));
-        if (!m.balanced() || m.settled == 0) {
+        if (!m.balanced() || m.settled == 0 || ball.carried == 0) {
             std::fprintf(stderr, "embed_snow: unexpected mass report\n");
             return 1;
         }
-    } catch (const snow::SnowError& e) {
+    } catch (const snow::Error& e) {
         std::fprintf(stderr, "embed_snow: %s\n", e.what());
         return 2;
     }

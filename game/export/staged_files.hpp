@@ -4,18 +4,19 @@
 /// one of them was written.
 #pragma once
 
+#include "ecs/error.hpp"
+
 #include <cstdint>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace snow {
 
 /// A file that cannot be written; the message names the path and why.
-class ExportError : public std::runtime_error {
+class ExportError : public Error {
   public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 /// Throws ExportError unless a file can be created at `file` (its folder

@@ -1,6 +1,6 @@
 // Scene creation. All simulation state goes through the Simulation facade
-// (which validates again and throws SnowError naming the field); the loader
-// adds only what the renderer reads: meshes, lights, camera, environment.
+// (which validates again and throws SimulationError naming the field); what
+// only the renderer reads (meshes, lights, camera, environment) goes to SceneVisuals.
 #include "game/scene/scene_build.hpp"
 
 #include <glm/common.hpp>
@@ -12,12 +12,12 @@ namespace snow {
 
 namespace {
 
-/// Runs a facade call; a SnowError becomes a SceneError prefixed with `prefix`.
+/// Runs a facade call; a SimulationError becomes a SceneError prefixed with `prefix`.
 template <typename Fn>
 auto through_facade(const std::string& prefix, Fn&& fn) {
     try {
         return fn();
-    } catch (const SnowError& e) {
+    } catch (const SimulationError& e) {
         throw SceneError(prefix + e.what());
     }
 }
@@ -146,7 +146,7 @@ Entity add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
     return sim.add_body(d);
 }
 
-void add_renderables(World& world, const WorldNode& node) {
+void add_renderables(SceneVisuals& visuals, const WorldNode& node) {
     for (std::size_t k = 0; k < node.primitives.size(); ++k) {
         const WorldPrimitive& p = node.primitives[k];
         MeshRenderable r;
@@ -155,7 +155,7 @@ void add_renderables(World& world, const WorldNode& node) {
         r.normals = p.normals;
         r.indices = p.indices;
         r.color = p.color;
-        world.add<MeshRenderable>(world.create(), std::move(r));
+        visuals.meshes.push_back(std::move(r));
     }
 }
 
@@ -172,7 +172,8 @@ SurfaceDef surface_over(const SurfaceDef& settings, const Aabb& bounds) {
     return d;
 }
 
-std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOverrides& o) {
+std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOverrides& o,
+                                        SceneVisuals& visuals) {
     if (o.cell_scale && !(std::isfinite(*o.cell_scale) && *o.cell_scale > 0.0f)) {
         scene_fail("cell_scale (command-line override)",
                    "must be finite and > 0 (got " + number_text(*o.cell_scale) + ")");
@@ -185,7 +186,8 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         const NodeSnow& role = d.roles[i];
         const std::string path = "nodes[" + std::to_string(node.index) + "].extras.snow";
         if ((role.surface || role.collider || is_body(role)) && node.primitives.empty()) {
-            scene_fail(path, "declares a surface, collider or body, but the node has no triangle mesh");
+            scene_fail(path,
+                       "declares a surface, collider or body, but the node has no triangle mesh");
         }
         if (role.collider == ColliderKind::mesh && is_body(role)) {
             scene_fail(path + ".collider", "a moving body must be a sphere, box or capsule");
@@ -199,7 +201,6 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
 
     auto sim = through_facade("simulation settings (after command-line overrides): ",
                               [&] { return std::make_unique<Simulation>(config_for(d, o)); });
-    World& world = sim->world();
     for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
         const WorldNode& node = d.geometry.nodes[i];
         const NodeSnow& role = d.roles[i];
@@ -214,10 +215,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if (surfaces[i]) {
             through_facade(prefix, [&] { return sim->add_surface(*surfaces[i], owner); });
         }
-        add_renderables(world, node);
+        add_renderables(visuals, node);
         if (const auto& light = d.lights[i]) {
-            world.add<PointLight>(world.create(),
-                                  PointLight{node.position, light->color, light->intensity});
+            visuals.lights.push_back(PointLight{node.position, light->color, light->intensity});
         }
     }
 
@@ -244,13 +244,14 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         through_facade(prefix, [&] { return sim->add_cover(cover); });
     }
     // After the scene's own camera and the default one mesh colliders bring.
-    if (const auto* cam = world.try_resource<OcclusionCamera>(); cam && o.occlusion_resolution) {
+    if (const auto* cam = sim->world().try_resource<OcclusionCamera>();
+        cam && o.occlusion_resolution) {
         OcclusionCamera c = *cam;
         c.resolution = *o.occlusion_resolution;
         through_facade("occlusion (command-line override): ", [&] { sim->set_occlusion(c); });
     }
-    world.set_resource<CameraDef>(s.camera);
-    world.set_resource<Environment>(s.environment);
+    visuals.camera = s.camera;
+    visuals.environment = s.environment;
     return sim;
 }
 

@@ -1,7 +1,6 @@
 /// @file scene_build.hpp
 /// @brief Turns a read and validated scene into a Simulation, only through the
-/// facade (systems/simulation.hpp) plus the render-side components
-/// (internal to snow::scene).
+/// facade (systems/simulation.hpp), and its SceneVisuals (internal to snow::scene).
 #pragma once
 
 #include "game/scene/scene_geometry.hpp"
@@ -35,9 +34,10 @@ struct SceneDescription {
 /// sloped plane touches the top of the bounds at its highest corner.
 [[nodiscard]] SurfaceDef surface_over(const SurfaceDef& settings, const Aabb& bounds);
 
-/// Creates the simulation. Facade errors (SnowError) come back as SceneError
-/// prefixed with the JSON path they belong to. Throws SceneError.
-[[nodiscard]] std::unique_ptr<Simulation> build_scene(const SceneDescription& d,
-                                                      const SceneOverrides& overrides);
+/// Creates the simulation and fills `visuals` (meshes, lights, camera, sky).
+/// Facade errors (SimulationError) come back as SceneError prefixed with the
+/// JSON path they belong to. Throws SceneError.
+[[nodiscard]] std::unique_ptr<Simulation>
+build_scene(const SceneDescription& d, const SceneOverrides& overrides, SceneVisuals& visuals);
 
 } // namespace snow

@@ -4,15 +4,16 @@
 /// prefixes the file name and turns it into SceneLoadResult::error.
 #pragma once
 
+#include "ecs/error.hpp"
+
 #include <sstream>
-#include <stdexcept>
 #include <string>
 
 namespace snow {
 
-class SceneError : public std::runtime_error {
+class SceneError : public Error {
   public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 /// A number as error messages print it (6 significant digits, like check::fail).
@@ -33,7 +34,7 @@ class SceneError : public std::runtime_error {
 
 /// Throws SceneError("field message").
 [[noreturn]] inline void scene_fail(const std::string& field, const std::string& message) {
-    throw SceneError(field + " " + message);
+    throw SceneError(field, message);
 }
 
 } // namespace snow

@@ -107,7 +107,7 @@ void load_bytes(std::string_view bytes, const std::string& folder, bool must_be_
     if (!d.geometry.scene_name.empty()) {
         result.name = d.geometry.scene_name;
     }
-    result.sim = build_scene(d, overrides);
+    result.sim = build_scene(d, overrides, result.visuals);
 }
 
 /// Runs load_bytes() and turns any failure into the one error message.
@@ -127,6 +127,7 @@ SceneLoadResult load(std::string_view bytes, const std::string& name, const std:
     }
     if (!result.error.empty()) {
         result.sim.reset();
+        result.visuals = {};
     }
     for (std::string& w : result.warnings) {
         w = name + ": " + w;

@@ -4,6 +4,7 @@
 /// public header of snow::scene; the scene_*.hpp files beside it are internals.
 #pragma once
 
+#include "render/scene_visuals.hpp"
 #include "systems/simulation.hpp"
 
 #include <cstddef>
@@ -31,10 +32,11 @@ struct SceneOverrides {
     std::optional<std::uint32_t> smoothing_iterations;
 };
 
-/// Either a ready simulation (sim set, error empty) or one error naming the
-/// file and the field (sim null). Never a partly built scene.
+/// Either a ready simulation and its visuals (sim set, error empty) or one
+/// error naming the file and the field (sim null). Never a partly built scene.
 struct SceneLoadResult {
     std::unique_ptr<Simulation> sim;
+    SceneVisuals visuals; ///< meshes, lights, camera, sky: what the renderer draws
     std::string error;
     std::string name; ///< the glTF scene's name, else the file's stem
     /// What the loader skipped ("<file>: <field> <problem>": a missing texture

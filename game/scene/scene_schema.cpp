@@ -5,6 +5,8 @@
 // the rest, and their messages are prefixed with the JSON path.
 #include "game/scene/scene_schema.hpp"
 
+#include "systems/validation.hpp"
+
 #include <cmath>
 
 namespace snow {
@@ -14,10 +16,10 @@ namespace {
 constexpr auto reject = UnknownKeys::reject;
 constexpr auto ignore = UnknownKeys::ignore;
 
-/// Throws SceneError("prefix.message") when `message` (from validate()) is set.
-void check_valid(const std::string& message, const std::string& prefix) {
-    if (!message.empty()) {
-        throw SceneError(prefix + "." + message);
+/// Throws SceneError("prefix.field", problem) when `v` (from validate()) holds a problem.
+void check_valid(const Invalid& v, const std::string& prefix) {
+    if (!v.empty()) {
+        throw SceneError(prefix + "." + v.field, v.problem);
     }
 }
 

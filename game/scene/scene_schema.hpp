@@ -5,6 +5,7 @@
 #pragma once
 
 #include "game/scene/scene_fields.hpp"
+#include "render/scene_visuals.hpp"
 #include "systems/simulation.hpp"
 
 #include <cstdint>

@@ -33,11 +33,10 @@ Frame render_scene(const std::string& name, std::uint64_t ticks) {
         return {};
     }
     r.sim->run(ticks);
-    const World& world = std::as_const(*r.sim).world();
-    const ViewCamera camera = ViewCamera::from_def(world.resource<CameraDef>());
+    const ViewCamera camera = ViewCamera::from_def(r.visuals.camera);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(world, camera);
+    renderer.render(r.sim->world(), r.visuals, camera);
     return {renderer.read_pixels(), renderer.pass_names()};
 }
 
@@ -64,8 +63,7 @@ TEST(RenderPerf, DISABLED_VillageEffectsPasses) {
         SceneLoadResult r = load_scene_file(scene_path(name));
         ASSERT_NE(r.sim, nullptr) << r.error;
         r.sim->run(240);
-        const World& world = std::as_const(*r.sim).world();
-        const ViewCamera camera = ViewCamera::from_def(world.resource<CameraDef>());
+        const ViewCamera camera = ViewCamera::from_def(r.visuals.camera);
         auto context = headless_context(640, 480);
         RenderSettings settings;
         settings.timing_mode = true;
@@ -73,7 +71,7 @@ TEST(RenderPerf, DISABLED_VillageEffectsPasses) {
         std::vector<std::vector<double>> ms;
         std::vector<double> frame;
         for (int i = 0; i < 16; ++i) {
-            renderer.render(world, camera);
+            renderer.render(r.sim->world(), r.visuals, camera);
             const auto& passes = renderer.timings().passes;
             ms.resize(passes.size());
             for (std::size_t p = 0; i > 0 && p < passes.size(); ++p) {

@@ -6,6 +6,8 @@
 #include "tests/game/scene_test_files.hpp"
 #include "tests/support/run_app.hpp"
 
+#include "systems/colliders.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -44,9 +46,11 @@ std::uint32_t u32_at(const std::string& bytes, std::size_t offset) {
     return v;
 }
 
-std::map<std::string, const MeshRenderable*> meshes_by_name(const World& w) {
+std::map<std::string, const MeshRenderable*> meshes_by_name(const SceneVisuals& v) {
     std::map<std::string, const MeshRenderable*> out;
-    w.each<MeshRenderable>([&](Entity, const MeshRenderable& m) { out[m.name] = &m; });
+    for (const MeshRenderable& m : v.meshes) {
+        out[m.name] = &m;
+    }
     return out;
 }
 
@@ -73,7 +77,7 @@ TEST(SceneGlb, VillageAsGlbSimulatesLikeTheGltf) {
     ASSERT_NE(b.sim, nullptr) << b.error;
     EXPECT_TRUE(b.warnings.empty()) << all_warnings(b);
     EXPECT_EQ(b.name, "village");
-    EXPECT_EQ(a.sim->world().count<MeshRenderable>(), b.sim->world().count<MeshRenderable>());
+    EXPECT_EQ(a.visuals.meshes.size(), b.visuals.meshes.size());
     a.sim->run(20);
     b.sim->run(20);
     EXPECT_EQ(a.sim->state_hash(), b.sim->state_hash());
@@ -203,7 +207,7 @@ TEST(SceneGltf, FileWithoutScenesUsesAllRootNodes) {
                           "roots.gltf");
     ASSERT_NE(r.sim, nullptr) << r.error;
     EXPECT_EQ(r.name, "roots.gltf"); // no scene to name it
-    const auto m = meshes_by_name(r.sim->world());
+    const auto m = meshes_by_name(r.visuals);
     ASSERT_EQ(m.size(), 3u);
     EXPECT_TRUE(has_point(*m.at("b"), {1, 1, 1})); // a child of "a", not a second root
     EXPECT_TRUE(has_point(*m.at("c"), {6, 0, 1}));
@@ -223,7 +227,7 @@ TEST(SceneGltf, NodeTransformsComposeAsTheSpecSays) {
         {"name": "child", "mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,5,1]}])";
     const SceneLoadResult r = load_scene_memory(with_nodes(nodes), "t.gltf");
     ASSERT_NE(r.sim, nullptr) << r.error;
-    const MeshRenderable& child = *meshes_by_name(r.sim->world()).at("child");
+    const MeshRenderable& child = *meshes_by_name(r.visuals).at("child");
     // Vertex (1, 0, 0): child → (1, 0, 5); scale → (2, 0, 5); rotate → (5, 0, −2); translate.
     EXPECT_TRUE(has_point(child, {6, 2, 1}));
     EXPECT_TRUE(has_point(child, {1 + 5, 2, 3})); // vertex (0, 0, 0)
@@ -284,14 +288,14 @@ TEST(SceneGltf, PrimitivesOfEveryIndexKindAndModesSkipped) {
                                "TRIANGLES become geometry, so it is skipped"));
     EXPECT_TRUE(has_warning(r, "meshes[0].primitives[5].mode is 0 (POINTS)"));
     std::size_t count = 0;
-    r.sim->world().each<MeshRenderable>([&](Entity, const MeshRenderable& m) {
+    for (const MeshRenderable& m : r.visuals.meshes) {
         ++count;
         ASSERT_EQ(m.indices.size(), 6u) << m.name;
         // Every primitive is the same up-facing quad, whatever its index kind.
         const glm::vec3 a = m.positions[m.indices[0]], b = m.positions[m.indices[1]],
                         c = m.positions[m.indices[2]];
         EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f) << m.name;
-    });
+    }
     EXPECT_EQ(count, 4u);
     // A role needs triangles: a node whose only primitive is skipped has none.
     const std::string lines_only = quad_file(
@@ -331,7 +335,7 @@ TEST(SceneTestData, ExporterStyleGlbLoadsWithItsHierarchy) {
     ASSERT_EQ(r.warnings.size(), 1u) << all_warnings(r);
     EXPECT_TRUE(has_warning(r, "meshes[1].primitives[1].mode is 1 (LINES)"));
     const World& w = r.sim->world();
-    const auto m = meshes_by_name(w);
+    const auto m = meshes_by_name(r.visuals);
     ASSERT_EQ(m.size(), 4u); // Ground, Crate, Tree (trunk), Tree#1 (crown)
     EXPECT_EQ(w.count<Emitter>() + w.count<SnowSurface>() + w.count<BoxCollider>(), 0u);
     // The crate: yard (1, 0, −1) + crate (0, 0.5, 0), turned 45° about y and
@@ -356,7 +360,7 @@ TEST(SceneTestData, PlainGltfWithoutScenesOrExtras) {
     ASSERT_EQ(r.warnings.size(), 1u) << all_warnings(r);
     EXPECT_TRUE(has_warning(r, "plain.gltf: images[0].uri 'textures/bark.png' is not a file "
                                "inside the scene's folder; ignored"));
-    const auto m = meshes_by_name(r.sim->world());
+    const auto m = meshes_by_name(r.visuals);
     ASSERT_EQ(m.size(), 2u);
     // The slab's matrix moves it by (0.5, 1, −0.5); it is 4 × 0.2 × 3 m.
     EXPECT_TRUE(has_point(*m.at("slab"), {2.5f, 1.1f, 1.0f}));

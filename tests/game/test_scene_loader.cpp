@@ -2,6 +2,8 @@
 // kind of bad input gives one error naming the file and the field, no Simulation.
 #include "tests/game/scene_test_files.hpp"
 
+#include "systems/colliders.hpp"
+
 #include <gtest/gtest.h>
 
 #include <glm/common.hpp>
@@ -44,17 +46,18 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_EQ(w.count<BoxCollider>(), 4u);    // walls, porch, garage, fence
     EXPECT_EQ(w.count<SphereCollider>(), 3u); // snowman
     EXPECT_EQ(w.count<MeshCollider>(), 2u);   // roof sides
-    EXPECT_EQ(w.count<SnowSurface>(), 6u); // ground, 2 roof sides, porch, garage, the cover
+    EXPECT_EQ(w.count<SnowSurface>(), 6u);    // ground, 2 roof sides, porch, garage, the cover
     EXPECT_EQ(w.count<SnowCover>(), 1u);
     EXPECT_EQ(w.count<Body>(), 1u); // the walker
-    EXPECT_EQ(w.count<MeshRenderable>(), 13u);
-    EXPECT_EQ(w.count<PointLight>(), 3u);
+    EXPECT_EQ(r.visuals.meshes.size(), 13u);
+    EXPECT_EQ(r.visuals.lights.size(), 3u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     EXPECT_TRUE(w.has_resource<Wind>());
     EXPECT_TRUE(w.has_resource<Fog>());
     EXPECT_TRUE(w.has_resource<OcclusionCamera>());
     EXPECT_FALSE(w.has_resource<SpectralSnow>());
-    EXPECT_TRUE(w.has_resource<CameraDef>());
+    EXPECT_EQ(r.visuals.camera.position,
+              glm::vec3(1.0f, 6.0f, 17.0f)); // the scene's own, not the default
 
     const SimConfig& c = r.sim->config();
     EXPECT_FLOAT_EQ(c.dt, 1.0f / 60.0f);
@@ -112,11 +115,11 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
 
     // [WF §5]: white above the house, blue nearer the camera, yellow on the right.
     int white = 0, blue = 0, yellow = 0;
-    w.each<PointLight>([&](Entity, const PointLight& l) {
+    for (const PointLight& l : r.visuals.lights) {
         white += l.color == glm::vec3(1.0f) && l.position.y > 8.0f;
         blue += l.color.b > l.color.r && l.position.z > 5.0f;
         yellow += l.color.r > l.color.b && l.position.x > 8.0f;
-    });
+    }
     EXPECT_EQ(white + blue + yellow, 3);
     EXPECT_EQ(white, 1);
     EXPECT_EQ(blue, 1);
@@ -126,7 +129,7 @@ TEST(SceneLoader, MeshRenderablesAreWorldSpaceWithUnitNormalsAndMaterialColour) 
     const SceneLoadResult r = load_scene_file(asset_path("village.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
     int garages = 0;
-    r.sim->world().each<MeshRenderable>([&](Entity, const MeshRenderable& m) {
+    for (const MeshRenderable& m : r.visuals.meshes) {
         ASSERT_EQ(m.positions.size(), m.normals.size()) << m.name;
         ASSERT_EQ(m.indices.size() % 3, 0u) << m.name;
         for (const std::uint32_t i : m.indices) {
@@ -144,7 +147,7 @@ TEST(SceneLoader, MeshRenderablesAreWorldSpaceWithUnitNormalsAndMaterialColour) 
             }
             EXPECT_NEAR(top, 2.5f, 1e-5f);
         }
-    });
+    }
     EXPECT_EQ(garages, 1);
 }
 
@@ -157,7 +160,7 @@ TEST(SceneLoader, MinimalSceneCreatesOnlyWhatItDeclares) {
     EXPECT_FALSE(w.has_resource<OcclusionCamera>());
     EXPECT_FALSE(w.has_resource<SpectralSnow>());
     EXPECT_EQ(w.count<BoxCollider>() + w.count<SphereCollider>() + w.count<MeshCollider>(), 0u);
-    EXPECT_EQ(w.count<PointLight>(), 0u);
+    EXPECT_TRUE(r.visuals.lights.empty());
     EXPECT_EQ(w.count<SnowSurface>(), 1u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     // Default bounds: the ground's (10 × 0.2 × 10 m) grown by the margin and headroom.
@@ -253,7 +256,7 @@ TEST(SceneLoader, AssetOnlyFileIsAnEmptyScene) {
     // Valid glTF with no scenes and no nodes: nothing to instance, no effects.
     const SceneLoadResult r = load_text(R"({"asset": {"version": "2.0"}})");
     ASSERT_NE(r.sim, nullptr) << r.error;
-    EXPECT_EQ(r.sim->world().count<MeshRenderable>(), 0u);
+    EXPECT_TRUE(r.visuals.meshes.empty());
     EXPECT_EQ(r.sim->world().count<Emitter>(), 0u);
     EXPECT_EQ(r.name, "test.gltf");
 }
@@ -339,9 +342,10 @@ TEST(SceneLoaderErrors, WrongExtrasTypesAndUnknownFields) {
                  {"nodes[0].extras.snow.surface.cell must be a number (got string)"});
     expect_error(with(R"({"snow": {"surface": 3}})"),
                  {"nodes[0].extras.snow.surface must be an object (got integer)"});
-    expect_error(with(R"({"snow": {"collider": 5}})"),
-                 {"nodes[0].extras.snow.collider must be one of \"box\", \"sphere\", \"mesh\", \"capsule\" "
-                  "(got integer)"});
+    expect_error(
+        with(R"({"snow": {"collider": 5}})"),
+        {"nodes[0].extras.snow.collider must be one of \"box\", \"sphere\", \"mesh\", \"capsule\" "
+         "(got integer)"});
     expect_error(with(R"({"snow": {"collider": "cone"}})"), {"(got \"cone\")"});
     expect_error(with(R"({"snow": {"surface": {"spills": 1}}})"),
                  {"surface.spills must be true or false"});
@@ -421,13 +425,14 @@ TEST(SceneLoaderErrors, MirroredNodeKeepsOutwardWinding) {
                                       "\"mesh\": 0, \"scale\": [-1, 1, 1]");
     const SceneLoadResult r = load_text(text);
     ASSERT_NE(r.sim, nullptr) << r.error;
-    r.sim->world().each<MeshRenderable>([](Entity, const MeshRenderable& m) {
+    ASSERT_EQ(r.visuals.meshes.size(), 1u);
+    for (const MeshRenderable& m : r.visuals.meshes) {
         // The quad faces up (+y); after mirroring in x it must still face up.
         const glm::vec3 a = m.positions[m.indices[0]], b = m.positions[m.indices[1]],
                         c = m.positions[m.indices[2]];
         EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f);
         EXPECT_GT(m.normals[0].y, 0.99f); // computed (the file has no NORMAL)
-    });
+    }
 }
 
 TEST(SceneLoaderErrors, FileAccessStaysInsideTheSceneFolder) {

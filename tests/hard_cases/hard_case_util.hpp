@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 namespace snow::hard {
@@ -32,20 +33,9 @@ template <typename T>
 /// Adds one airborne flake (and books its mass as spawned); returns its slot.
 inline std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, float k_over_m,
                                  std::uint32_t units) {
-    FlakePool& f = sim.world().resource<FlakePool>();
-    std::uint32_t slot = 0;
-    EXPECT_TRUE(f.acquire(slot)) << "test setup: flake pool full";
-    f.px[slot] = p.x;
-    f.py[slot] = p.y;
-    f.pz[slot] = p.z;
-    f.vx[slot] = v.x;
-    f.vy[slot] = v.y;
-    f.vz[slot] = v.z;
-    f.k_over_m[slot] = k_over_m;
-    f.size[slot] = 0.01f;
-    f.mass_units[slot] = units;
-    sim.world().resource<MassLedger>().spawned += units;
-    return slot;
+    const std::optional<std::uint32_t> slot = sim.place_flake({p, v, k_over_m, 0.01f, units});
+    EXPECT_TRUE(slot.has_value()) << "test setup: flake pool full";
+    return slot.value_or(0);
 }
 
 /// The invariants every hard case keeps on every tick it checks: the ledger
@@ -66,8 +56,8 @@ inline std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, floa
 }
 
 /// The SnowSurface component of a surface entity.
-[[nodiscard]] inline SnowSurface& surface(Simulation& sim, Entity e) {
-    return sim.world().get<SnowSurface>(e);
+[[nodiscard]] inline const SnowSurface& surface(const Simulation& sim, Entity e) {
+    return sim.surface(e);
 }
 
 /// Summary of a surface's settled snow.

@@ -105,13 +105,11 @@ TEST(HardCaseHeavyFlakes, FlakeInsideTheSnowLayerLandsEvenWhenItsTickEndsBelowTh
     d.cell = 0.05f;
     d.spills = false;
     const Entity e = sim.add_surface(d);
-    SnowSurface& s = hard::surface(sim, e);
+    const SnowSurface& s = hard::surface(sim, e);
     std::uint32_t ix = 0, iz = 0;
     ASSERT_TRUE(s.cell_at(0.01f, 0.01f, ix, iz));
     const std::uint32_t depth_units = 1100; // 2.2 cm at 2e-5 m per unit
-    s.snow[s.index(ix, iz)] = depth_units;
-    s.mark_dirty(ix, iz);
-    sim.world().resource<MassLedger>().spawned += depth_units;
+    sim.add_settled_snow(e, ix, iz, depth_units);
     // 0.8 cm above the bare top, 1.4 cm under the snow top, falling at 1.28 m/s.
     hard::place_flake(sim, {0.01f, 0.008f, 0.01f}, {0.0f, -1.28f, 0.0f}, 7.67f, max_flake_units);
     sim.run(2); // missed, it is at y = -0.31 after one tick and out of the bounds after two

@@ -1,11 +1,13 @@
 // Hard case 11: NaN, ±inf, negative and zero values through every door: the
-// Simulation API (SnowError naming the field, state exactly unchanged: Box2D's
+// Simulation API (SimulationError naming the field, state exactly unchanged: Box2D's
 // test_invalid_input pattern), a scene file (an error naming the file and the
 // field, no Simulation), and snow_run's flags (exit status 2, the flag named).
 #include "hard_case_util.hpp"
 
 #include "game/scene/scene_loader.hpp"
+#include "systems/colliders.hpp"
 #include "systems/sample_scenes.hpp"
+#include "systems/units.hpp"
 
 #include <array>
 #include <cmath>
@@ -72,10 +74,52 @@ std::function<void(Simulation&, float)> with(Setter set) {
     };
 }
 
+/// The first entity that has a T (the running yard has one of each used here).
+template <typename T>
+Entity first_with(const Simulation& sim) {
+    Entity found = null_entity;
+    sim.world().each<T>([&](Entity e, const T&) { found = found.is_null() ? e : found; });
+    return found;
+}
+
+/// A flake placed with `set` applied to an otherwise valid FlakeSpec.
+template <typename Setter>
+std::function<void(Simulation&, float)> flake_with(Setter set) {
+    return [set](Simulation& sim, float v) {
+        FlakeSpec f;
+        f.position = {0.0f, 5.0f, 0.0f};
+        set(f, v);
+        (void)sim.place_flake(f);
+    };
+}
+
+/// A box collider without a snow surface, to move around.
+Entity free_box(const Simulation& sim) {
+    Entity found = null_entity;
+    sim.world().each<BoxCollider>([&](Entity e, const BoxCollider&) {
+        if (found.is_null() && !sim.world().has<SnowHolder>(e)) {
+            found = e;
+        }
+    });
+    return found;
+}
+
 /// Every number the API takes that has a validity rule.
 std::vector<Field> api_fields() {
     using R = Rule;
     return {
+        {"emitter.rate", R::non_negative,
+         [](Simulation& s, float v) { s.set_emitter_rate(first_with<Emitter>(s), v); }},
+        {"box.max.z", R::finite,
+         [](Simulation& s, float v) {
+             s.move_box(free_box(s), {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, v}});
+         }},
+        {"flake.position.x", R::finite,
+         flake_with([](FlakeSpec& f, float v) { f.position.x = v; })},
+        {"flake.velocity.y", R::finite,
+         flake_with([](FlakeSpec& f, float v) { f.velocity.y = v; })},
+        {"flake.k_over_m", R::positive, flake_with([](FlakeSpec& f, float v) { f.k_over_m = v; })},
+        {"flake.size", R::non_negative, flake_with([](FlakeSpec& f, float v) { f.size = v; })},
         {"emitter.rate", R::non_negative, with<Emitter>([](Emitter& e, float v) { e.rate = v; })},
         {"emitter.mass_min_g", R::positive,
          with<Emitter>([](Emitter& e, float v) { e.mass_min_g = v; })},
@@ -179,13 +223,14 @@ Observed observe(const Simulation& sim) {
             w.has_resource<OcclusionCamera>()};
 }
 
-/// A small sample yard after 30 ticks.
+/// A small sample yard with a free-standing shed after 30 ticks.
 std::unique_ptr<Simulation> running_yard() {
     YardOptions o;
     o.seed = 11;
     o.ground_cells = 32;
     o.max_flakes = 4000;
     auto sim = make_yard(o);
+    sim->add_box({{-7.0f, 0.0f, -7.0f}, {-6.0f, 1.0f, -6.0f}});
     sim->run(30);
     return sim;
 }
@@ -201,24 +246,45 @@ TEST(HardCaseInvalidInput, ApiRejectsEveryBadNumberAndLeavesTheStateAlone) {
             try {
                 field.call(*sim, v);
                 ADD_FAILURE() << "accepted";
-            } catch (const SnowError& e) {
+            } catch (const SimulationError& e) {
                 EXPECT_NE(std::string(e.what()).find(field.name), std::string::npos)
                     << "message does not name the field: " << e.what();
+                EXPECT_EQ(e.field().rfind(field.name, 0), 0u) << "field() is " << e.field();
                 ++rejected;
             }
             ASSERT_EQ(observe(*sim), before) << "a rejected call changed the simulation";
         }
     }
-    // Handles: null, never created.
-    EXPECT_THROW(sim->remove(null_entity), SnowError);
-    EXPECT_THROW(sim->add_surface(SurfaceDef{}, Entity::make(4000, 3)), SnowError);
+    // Handles: null, never created, or of the wrong kind.
+    EXPECT_THROW(sim->remove(null_entity), SimulationError);
+    EXPECT_THROW(sim->add_surface(SurfaceDef{}, Entity::make(4000, 3)), SimulationError);
+    EXPECT_THROW(sim->set_emitter_rate(null_entity, 10.0f), SimulationError);
+    EXPECT_THROW(sim->set_emitter_rate(free_box(*sim), 10.0f), SimulationError);
+    EXPECT_THROW((void)sim->surface(first_with<Emitter>(*sim)), SimulationError);
+    // A box carrying snow cannot move; hand-added snow must fit its surface and cell.
+    const Entity garage = first_with<SnowHolder>(*sim);
+    EXPECT_THROW(sim->move_box(garage, {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}}), SimulationError);
+    const Entity ground = first_with<SnowSurface>(*sim);
+    const SnowSurface& g = sim->surface(ground);
+    EXPECT_THROW(sim->add_settled_snow(ground, g.nx, 0, 1), SimulationError);
+    EXPECT_THROW(sim->add_settled_snow(ground, 0, g.nz, 1), SimulationError);
+    EXPECT_THROW(sim->add_settled_snow(ground, 0, 0, 0), SimulationError);
+    for (const std::uint32_t units : {0u, max_flake_units + 1}) {
+        FlakeSpec f;
+        f.mass_units = units;
+        try {
+            (void)sim->place_flake(f);
+            ADD_FAILURE() << "mass_units " << units << " accepted";
+        } catch (const SimulationError& e) {
+            EXPECT_EQ(e.field(), "flake.mass_units") << e.what();
+        }
+    }
     // An integrator value outside the enum would match no rule and freeze every flake.
     try {
         sim->set_integrator(static_cast<Integrator>(200));
         ADD_FAILURE() << "integrator 200 accepted";
-    } catch (const SnowError& e) {
-        EXPECT_NE(std::string(e.what()).find("simulation.integrator"), std::string::npos)
-            << e.what();
+    } catch (const SimulationError& e) {
+        EXPECT_EQ(e.field(), "simulation.integrator") << e.what();
     }
     EXPECT_EQ(observe(*sim), before);
     EXPECT_GT(rejected, 150);
@@ -230,6 +296,25 @@ TEST(HardCaseInvalidInput, ApiRejectsEveryBadNumberAndLeavesTheStateAlone) {
         ASSERT_EQ(sim->state_hash(), twin->state_hash()) << "tick " << t;
     }
     ASSERT_TRUE(hard::healthy(*sim));
+}
+
+TEST(HardCaseInvalidInput, HandAddedSnowStopsAtTheCellLimit) {
+    Simulation sim;
+    SurfaceDef d;
+    d.spills = false;
+    const Entity e = sim.add_surface(d);
+    sim.add_settled_snow(e, 3, 4, max_cell_units - 5);
+    try {
+        sim.add_settled_snow(e, 3, 4, 6);
+        ADD_FAILURE() << "a cell past max_cell_units accepted";
+    } catch (const SimulationError& err) {
+        EXPECT_EQ(err.field(), "add_settled_snow(units)") << err.what();
+    }
+    sim.add_settled_snow(e, 3, 4, 5);
+    EXPECT_EQ(sim.surface(e).snow[sim.surface(e).index(3, 4)], max_cell_units);
+    EXPECT_THROW(sim.add_settled_snow(e, 3, 4, 1), SimulationError);
+    EXPECT_TRUE(sim.mass().balanced());
+    EXPECT_EQ(sim.mass().settled, max_cell_units);
 }
 
 TEST(HardCaseInvalidInput, BadSimConfigNeverMakesASimulation) {
@@ -254,7 +339,7 @@ TEST(HardCaseInvalidInput, BadSimConfigNeverMakesASimulation) {
             try {
                 Simulation sim(c);
                 ADD_FAILURE() << "accepted";
-            } catch (const SnowError& e) {
+            } catch (const SimulationError& e) {
                 EXPECT_NE(std::string(e.what()).find(b.name), std::string::npos) << e.what();
             }
         }
@@ -264,7 +349,7 @@ TEST(HardCaseInvalidInput, BadSimConfigNeverMakesASimulation) {
     try {
         Simulation sim(no_pool);
         ADD_FAILURE() << "max_flakes 0 accepted";
-    } catch (const SnowError& e) {
+    } catch (const SimulationError& e) {
         EXPECT_NE(std::string(e.what()).find("simulation.max_flakes"), std::string::npos)
             << e.what();
     }

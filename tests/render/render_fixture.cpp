@@ -108,20 +108,19 @@ void build_fixture(FixtureScene& s) {
     s.shelter_roof_box = {{0.5f, 2.0f, -1.5f}, {3.5f, 2.15f, 1.5f}};
     s.crate_box = {{1.4f, 0.0f, -0.6f}, {2.6f, 0.7f, 0.6f}};
 
-    w.add<MeshRenderable>(w.create(), ground_mesh(12.0f, {0.32f, 0.30f, 0.26f}));
-    w.add<MeshRenderable>(w.create(), box_mesh(s.house_box, {0.55f, 0.25f, 0.20f}));
-    s.shelter = w.create();
-    w.add<MeshRenderable>(s.shelter, box_mesh(s.shelter_roof_box, {0.40f, 0.40f, 0.45f}));
+    std::vector<MeshRenderable>& meshes = s.visuals.meshes;
+    meshes.push_back(ground_mesh(12.0f, {0.32f, 0.30f, 0.26f}));
+    meshes.push_back(box_mesh(s.house_box, {0.55f, 0.25f, 0.20f}));
+    meshes.push_back(box_mesh(s.shelter_roof_box, {0.40f, 0.40f, 0.45f}));
     std::vector<Aabb> boxes = {s.house_box, s.shelter_roof_box, s.crate_box};
     for (const float px : {0.55f, 3.35f}) {
         for (const float pz : {-1.45f, 1.35f}) {
             const Aabb post{{px, 0.0f, pz}, {px + 0.1f, 2.0f, pz + 0.1f}};
-            w.add<MeshRenderable>(w.create(), box_mesh(post, {0.25f, 0.2f, 0.15f}));
+            meshes.push_back(box_mesh(post, {0.25f, 0.2f, 0.15f}));
             boxes.push_back(post);
         }
     }
-    s.crate = w.create();
-    w.add<MeshRenderable>(s.crate, box_mesh(s.crate_box, {0.45f, 0.30f, 0.15f}));
+    meshes.push_back(box_mesh(s.crate_box, {0.45f, 0.30f, 0.15f}));
 
     // Ground snow: gentle waves, none under the house or the shelter roof.
     SnowSurface ground = flat_surface(-6.0f, -6.0f, 12.0f, 12.0f, 0.25f, 0.0f);
@@ -151,10 +150,9 @@ void build_fixture(FixtureScene& s) {
 
     // Three coloured point lights as in [WF §5]: white above the house,
     // blue toward the camera, yellow to the right.
-    w.add<PointLight>(w.create(), PointLight{{-2.5f, 7.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 1.0f});
-    w.add<PointLight>(w.create(), PointLight{{-1.0f, 3.0f, 7.0f}, {0.45f, 0.55f, 1.0f}, 0.7f});
-    w.add<PointLight>(w.create(), PointLight{{7.0f, 3.5f, 1.0f}, {1.0f, 0.85f, 0.45f}, 0.7f});
-    w.set_resource<Environment>();
+    s.visuals.lights = {PointLight{{-2.5f, 7.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 1.0f},
+                        PointLight{{-1.0f, 3.0f, 7.0f}, {0.45f, 0.55f, 1.0f}, 0.7f},
+                        PointLight{{7.0f, 3.5f, 1.0f}, {1.0f, 0.85f, 0.45f}, 0.7f}};
 
     // The sky camera's map [SKY], rasterised from the boxes above.
     OcclusionMap& map = w.set_resource<OcclusionMap>();
@@ -187,18 +185,18 @@ void build_fixture(FixtureScene& s) {
         pool.mass_units[slot] = 1;
     }
 
-    CameraDef def;
+    CameraDef& def = s.visuals.camera;
     def.position = {1.5f, 3.4f, 8.5f};
     def.target = {0.0f, 0.9f, 0.0f};
     def.fov_y_deg = 50.0f;
-    w.set_resource<CameraDef>(def);
     s.camera = ViewCamera::from_def(def);
 }
 
-Image render_image(const World& world, const ViewCamera& camera, const RenderSettings& settings) {
+Image render_image(const World& world, const SceneVisuals& visuals, const ViewCamera& camera,
+                   const RenderSettings& settings) {
     auto context = headless_context();
     Renderer renderer(*context, settings);
-    renderer.render(world, camera);
+    renderer.render(world, visuals, camera);
     return renderer.read_pixels();
 }
 

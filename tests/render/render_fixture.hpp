@@ -1,6 +1,7 @@
 /// @file render_fixture.hpp
 /// @brief Shared setup of the render tests: a fixed scene built directly in a
-/// World (no simulation systems), headless contexts and golden-image checks.
+/// World and its SceneVisuals (no simulation systems), headless contexts and
+/// golden-image checks.
 #pragma once
 
 #include "ecs/world.hpp"
@@ -8,10 +9,10 @@
 #include "render/image.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/render_settings.hpp"
+#include "render/scene_visuals.hpp"
 #include "systems/fog.hpp"
 #include "systems/geometry.hpp"
 #include "systems/snow_surface.hpp"
-#include "systems/visuals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,15 +43,16 @@ inline constexpr float fixture_unit_height = 0.002f;
 /// lights [WF §5], an occlusion map and flakes at fixed positions.
 struct FixtureScene {
     World world;
+    SceneVisuals visuals;
     ViewCamera camera;
-    Entity ground_surface, house_roof, shelter, crate;
+    Entity ground_surface, house_roof;
     Aabb shelter_roof_box, crate_box, house_box;
 };
 void build_fixture(FixtureScene& scene);
 
-/// Renders one frame of `world` in a fresh golden-size headless context.
-[[nodiscard]] Image render_image(const World& world, const ViewCamera& camera,
-                                 const RenderSettings& settings = {});
+/// Renders one frame of `world` and `visuals` in a fresh golden-size headless context.
+[[nodiscard]] Image render_image(const World& world, const SceneVisuals& visuals,
+                                 const ViewCamera& camera, const RenderSettings& settings = {});
 
 /// Projects a world point to pixel (x, y), y = 0 at the top, for a golden-size image.
 [[nodiscard]] glm::ivec2 to_pixel(const ViewCamera& camera, const glm::vec3& p);

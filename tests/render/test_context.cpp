@@ -71,10 +71,10 @@ TEST(RenderContext, SwitchingBetweenContextsReloadsEntryPoints) {
     auto b = headless_context();
     Renderer rb(*b);
     a->make_current();
-    ra.render(scene.world, scene.camera);
+    ra.render(scene.world, scene.visuals, scene.camera);
     const Image ia = ra.read_pixels();
     b->make_current();
-    rb.render(scene.world, scene.camera);
+    rb.render(scene.world, scene.visuals, scene.camera);
     const Image ib = rb.read_pixels();
     EXPECT_EQ(compare_images(ia, ib).worst, 0);
     a->make_current(); // leave `a` current for its renderer's destruction
@@ -83,7 +83,7 @@ TEST(RenderContext, SwitchingBetweenContextsReloadsEntryPoints) {
 TEST(RenderContext, EglSurfacelessDrawsLikeOsMesa) {
     FixtureScene scene;
     build_fixture(scene);
-    const Image osmesa = render_image(scene.world, scene.camera);
+    const Image osmesa = render_image(scene.world, scene.visuals, scene.camera);
     ContextRequest req;
     req.backend = ContextBackend::egl;
     req.width = golden_width;
@@ -99,7 +99,7 @@ TEST(RenderContext, EglSurfacelessDrawsLikeOsMesa) {
     Image egl;
     {
         Renderer renderer(*context);
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         egl = renderer.read_pixels();
     }
     const ImageComparison c = compare_images(egl, osmesa);
@@ -114,7 +114,7 @@ TEST(RenderContext, GlfwWindowUnderXvfbDrawsLikeHeadless) {
     }
     FixtureScene scene;
     build_fixture(scene);
-    const Image headless = render_image(scene.world, scene.camera);
+    const Image headless = render_image(scene.world, scene.visuals, scene.camera);
 
     Xvfb server;
     std::string display, error;
@@ -135,7 +135,7 @@ TEST(RenderContext, GlfwWindowUnderXvfbDrawsLikeHeadless) {
         ASSERT_EQ(context->framebuffer_size(), glm::ivec2(golden_width, golden_height));
         EXPECT_FALSE(context->should_close());
         Renderer renderer(*context);
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         windowed = renderer.read_pixels();
         context->swap_buffers();
         context->poll_events();

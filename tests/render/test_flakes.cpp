@@ -90,7 +90,8 @@ int peak(const Image& img) {
 /// Peak brightness of one flake at `p` over a black sky.
 int flake_peak(const glm::vec3& p, float size) {
     World w;
-    w.set_resource<Environment>(Environment{{0.1f, 0.1f, 0.1f}, {0.0f, 0.0f, 0.0f}});
+    SceneVisuals visuals;
+    visuals.environment = Environment{{0.1f, 0.1f, 0.1f}, {0.0f, 0.0f, 0.0f}};
     FlakePool& pool = w.set_resource<FlakePool>();
     pool.reset(4);
     if (size > 0.0f) {
@@ -99,7 +100,7 @@ int flake_peak(const glm::vec3& p, float size) {
     RenderSettings settings;
     settings.flake_scale = 1.0f;
     settings.flake_lod = FlakeLod::never;
-    return peak(render_image(w, looking_down_minus_z(), settings));
+    return peak(render_image(w, visuals, looking_down_minus_z(), settings));
 }
 
 TEST(RenderFlakes, SpritesShowAndFarOnesAreMoreTranslucent) {
@@ -114,9 +115,10 @@ TEST(RenderFlakes, SpritesShowAndFarOnesAreMoreTranslucent) {
 
 TEST(RenderFlakes, PassRunsOnlyWithAliveFlakes) {
     World w;
+    const SceneVisuals visuals;
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(w, looking_down_minus_z());
+    renderer.render(w, visuals, looking_down_minus_z());
     const auto flakes_ran = [&] {
         for (const PassTiming& p : renderer.timings().passes) {
             if (p.name == "flakes") {
@@ -128,10 +130,10 @@ TEST(RenderFlakes, PassRunsOnlyWithAliveFlakes) {
     EXPECT_FALSE(flakes_ran());
     FlakePool& pool = w.set_resource<FlakePool>();
     pool.reset(4);
-    renderer.render(w, looking_down_minus_z());
+    renderer.render(w, visuals, looking_down_minus_z());
     EXPECT_FALSE(flakes_ran()) << "an empty pool draws nothing";
     add_flake(pool, {0.0f, 0.0f, -3.0f});
-    renderer.render(w, looking_down_minus_z());
+    renderer.render(w, visuals, looking_down_minus_z());
     EXPECT_TRUE(flakes_ran());
     EXPECT_EQ(renderer.timings().flakes_drawn, 1u);
     EXPECT_EQ(renderer.timings().flakes_alive, 1u);

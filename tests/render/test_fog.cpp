@@ -55,6 +55,7 @@ TEST(RenderFog, LayerDensityIsZeroOutsideAndTableEmptyForNoLayer) {
 /// A plain snowless ground plane seen from `eye_y`, looking along −z, 10° down.
 struct OpenField {
     World world;
+    SceneVisuals visuals;
     ViewCamera camera;
     RenderSettings settings;
     explicit OpenField(float eye_y) {
@@ -63,13 +64,12 @@ struct OpenField {
         ground.normals.assign(4, {0.0f, 1.0f, 0.0f});
         ground.indices = {0, 2, 1, 0, 3, 2};
         ground.color = {0.8f, 0.8f, 0.8f};
-        world.add<MeshRenderable>(world.create(), ground);
-        world.set_resource<Environment>();
+        visuals.meshes.push_back(ground);
         camera.position = {0.0f, eye_y, 0.0f};
         camera.pitch = -0.1745f;
         settings.mesh_snow = 0.0f;
     }
-    [[nodiscard]] Image render() const { return render_image(world, camera, settings); }
+    [[nodiscard]] Image render() const { return render_image(world, visuals, camera, settings); }
 };
 
 TEST(RenderFog, NonFiniteFogNumbersGiveNoFogNotGarbage) {
@@ -128,7 +128,7 @@ TEST(RenderFog, WorldWithoutFogCompilesAndRunsNoFogCode) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     for (const std::string& v : renderer.compiled_variants()) {
         EXPECT_EQ(v.find("FOG"), std::string::npos) << v;
     }
@@ -136,7 +136,7 @@ TEST(RenderFog, WorldWithoutFogCompilesAndRunsNoFogCode) {
     EXPECT_EQ(renderer.timings().passes.at(1).name, "sky");
 
     scene.world.set_resource<Fog>(layer(0.0f, 1.0f, 0.5f));
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_TRUE(renderer.timings().passes.at(1).ran);
     std::size_t fog_variants = 0;
     for (const std::string& v : renderer.compiled_variants()) {

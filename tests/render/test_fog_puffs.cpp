@@ -161,11 +161,10 @@ TEST(FogPuffs, ShaderProbeHandlesManySegmentsInBatches) {
 /// Sky black, fog white, no global fog: a pixel's grey level is 255·(1 − 0.5^depth).
 struct PuffField {
     World world;
+    SceneVisuals visuals;
     ViewCamera camera;
     explicit PuffField(std::vector<FogPuff> puffs) {
-        Environment env;
-        env.sky = glm::vec3(0.0f);
-        world.set_resource<Environment>(env);
+        visuals.environment.sky = glm::vec3(0.0f);
         Fog fog;
         fog.mode = FogMode::exponential;
         fog.density = 0.0f;
@@ -184,7 +183,7 @@ TEST(RenderFogPuffs, PixelsShowHalfToThePowerOfTheOpticalDepth) {
         gaussian({0.0f, 1.0f, 0.0f}, 1.0f, 0.6f),
         gabor({2.5f, 1.5f, -1.0f}, 0.8f, 1.5f, {0.0f, 4.0f, 0.0f}, 0.0f)};
     PuffField field(puffs);
-    const Image image = render_image(field.world, field.camera);
+    const Image image = render_image(field.world, field.visuals, field.camera);
     const glm::mat4 inv =
         glm::inverse(field.camera.projection(static_cast<float>(golden_width) / golden_height) *
                      field.camera.view());
@@ -211,12 +210,12 @@ TEST(RenderFogPuffs, OpaqueSurfacesCutTheRayShort) {
     const std::vector<FogPuff> puffs = {gaussian({0.0f, 1.0f, 0.0f}, 1.0f, 0.6f)};
     PuffField open(puffs);
     PuffField walled(puffs);
-    walled.world.add<MeshRenderable>(
-        walled.world.create(),
+    walled.visuals.meshes.push_back(
         box_mesh({{-3.0f, -2.0f, 0.0f}, {3.0f, 4.0f, 0.1f}}, glm::vec3(0.0f)));
     const glm::ivec2 px = to_pixel(open.camera, {0.0f, 1.0f, 0.0f});
-    const float full = render_image(open.world, open.camera).pixel(px.x, px.y)[0];
-    const float half = render_image(walled.world, walled.camera).pixel(px.x, px.y)[0];
+    const float full = render_image(open.world, open.visuals, open.camera).pixel(px.x, px.y)[0];
+    const float half =
+        render_image(walled.world, walled.visuals, walled.camera).pixel(px.x, px.y)[0];
     // Through the whole puff 0.6·√(2π) ≈ 1.5 halvings; to the wall (z = 0.1) just under half.
     const double to_wall = puff_optical_depth(puffs[0], {0.0, 1.0, 8.0}, {0.0, 1.0, 0.1});
     EXPECT_NEAR(half, 255.0 * (1.0 - std::pow(0.5, to_wall)), 3.0);
@@ -239,7 +238,8 @@ TEST(RenderGolden, FixtureWithLayeredFogAndPuffs) {
     fog.layer_density = 0.2f;
     fog.puffs = fixture_puffs();
     scene.world.set_resource<Fog>(fog);
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.camera), "scene_fog_puffs"));
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_fog_puffs"));
 }
 
 TEST(RenderPerf, DISABLED_FogPuffPass) {
@@ -256,7 +256,7 @@ TEST(RenderPerf, DISABLED_FogPuffPass) {
     Renderer renderer(*context, settings);
     std::vector<double> pass_ms;
     for (int i = 0; i < 16; ++i) {
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         for (const PassTiming& p : renderer.timings().passes) {
             if (p.name == "fog_puffs" && i > 0) {
                 pass_ms.push_back(p.cpu_ms);

@@ -16,7 +16,7 @@ Image render_fixture(const std::optional<Fog>& fog) {
     if (fog) {
         scene.world.set_resource<Fog>(*fog);
     }
-    return render_image(scene.world, scene.camera);
+    return render_image(scene.world, scene.visuals, scene.camera);
 }
 
 TEST(RenderGolden, SceneWithoutFog) {

@@ -44,19 +44,20 @@ TEST(RenderImage, FileErrorsNameThePath) {
 
 TEST(RenderImage, ScreenshotIsRightSideUp) {
     // Sky above, a dark ground plane below the horizon: row 0 must be sky.
-    World w;
-    w.set_resource<Environment>(Environment{{0.2f, 0.2f, 0.2f}, {0.0f, 0.0f, 1.0f}});
+    const World w;
+    SceneVisuals visuals;
+    visuals.environment = Environment{{0.2f, 0.2f, 0.2f}, {0.0f, 0.0f, 1.0f}};
     MeshRenderable ground;
     ground.positions = {{-50, 0, -50}, {50, 0, -50}, {50, 0, 50}, {-50, 0, 50}};
     ground.normals.assign(4, {0.0f, 1.0f, 0.0f});
     ground.indices = {0, 2, 1, 0, 3, 2};
     ground.color = {1.0f, 0.0f, 0.0f};
-    w.add<MeshRenderable>(w.create(), ground);
+    visuals.meshes.push_back(ground);
     ViewCamera cam;
     cam.position = {0.0f, 1.0f, 0.0f};
     RenderSettings settings;
     settings.mesh_snow = 0.0f;
-    const Image img = render_image(w, cam, settings);
+    const Image img = render_image(w, visuals, cam, settings);
     const std::uint8_t* top = img.pixel(golden_width / 2, 0);
     const std::uint8_t* bottom = img.pixel(golden_width / 2, golden_height - 1);
     EXPECT_EQ(top[2], 255);

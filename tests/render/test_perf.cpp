@@ -18,9 +18,9 @@ namespace {
 void report(Renderer& renderer, FixtureScene& scene, const char* label) {
     constexpr int frames = 15;
     std::vector<double> frame_ms, flake_ms;
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     for (int i = 0; i < frames; ++i) {
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         const FrameTimings& t = renderer.timings();
         frame_ms.push_back(t.frame_ms);
         for (const PassTiming& p : t.passes) {

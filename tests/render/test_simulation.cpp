@@ -32,15 +32,15 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     top.cell = 0.1f;
     top.base_y = roof_box.max.y;
     sim.add_surface(top, roof);
-    const Entity crate = sim.add_box(crate_box);
+    sim.add_box(crate_box);
     sim.add_emitter(Emitter{});
     sim.set_occlusion(OcclusionCamera{});
-    World& w = sim.world();
-    w.add<MeshRenderable>(roof, box_mesh(roof_box, {0.4f, 0.4f, 0.45f}));
-    w.add<MeshRenderable>(crate, box_mesh(crate_box, {0.45f, 0.30f, 0.15f}));
+    SceneVisuals visuals;
+    visuals.meshes = {box_mesh(roof_box, {0.4f, 0.4f, 0.45f}),
+                      box_mesh(crate_box, {0.45f, 0.30f, 0.15f})};
     sim.run(240);
     ASSERT_GT(sim.flakes().alive, 0u);
-    ASSERT_TRUE(w.has_resource<OcclusionMap>());
+    ASSERT_TRUE(sim.world().has_resource<OcclusionMap>());
 
     CameraDef def;
     def.position = {1.5f, 3.4f, 8.5f};
@@ -49,7 +49,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     auto context = headless_context();
     Renderer renderer(*context);
     const std::uint64_t before = sim.state_hash();
-    renderer.render(std::as_const(sim).world(), camera);
+    renderer.render(sim.world(), visuals, camera);
     EXPECT_EQ(sim.state_hash(), before) << "rendering changed the simulation";
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 2u);
     EXPECT_GT(renderer.timings().flakes_drawn, 0u);
@@ -63,7 +63,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     EXPECT_GT(brightness({2.0f, 2.15f, 0.0f}), brightness({2.0f, 0.7f, 0.3f}) + 60.0f);
 
     sim.run(60); // more snow lands: only changed surfaces are re-uploaded
-    renderer.render(std::as_const(sim).world(), camera);
+    renderer.render(sim.world(), visuals, camera);
     EXPECT_GE(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_LE(renderer.timings().surfaces_uploaded, 2u);
 }

@@ -25,7 +25,7 @@ float saturation(const glm::vec3& c) {
 TEST(RenderSnowCover, RoofIsWhiteWhileTheMeshUnderItStaysDark) {
     FixtureScene scene;
     build_fixture(scene);
-    const Image image = render_image(scene.world, scene.camera);
+    const Image image = render_image(scene.world, scene.visuals, scene.camera);
     const glm::vec3 roof = mean_color(image, to_pixel(scene.camera, {2.0f, 2.15f, 0.0f}), 2);
     const glm::vec3 crate = mean_color(image, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
     EXPECT_GT(brightness(roof), 170.0f);
@@ -35,7 +35,7 @@ TEST(RenderSnowCover, RoofIsWhiteWhileTheMeshUnderItStaysDark) {
 
     // Without the sky camera nothing is occluded: the same crate top turns white.
     scene.world.erase_resource<OcclusionMap>();
-    const Image exposed = render_image(scene.world, scene.camera);
+    const Image exposed = render_image(scene.world, scene.visuals, scene.camera);
     const glm::vec3 crate_exposed =
         mean_color(exposed, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
     EXPECT_GT(brightness(crate_exposed), brightness(crate) + 40.0f);
@@ -46,8 +46,8 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
     build_fixture(scene);
     RenderSettings bare;
     bare.mesh_snow = 0.0f;
-    const Image with_snow = render_image(scene.world, scene.camera);
-    const Image without = render_image(scene.world, scene.camera, bare);
+    const Image with_snow = render_image(scene.world, scene.visuals, scene.camera);
+    const Image without = render_image(scene.world, scene.visuals, scene.camera, bare);
     // The house's front wall faces +z: dot(N, up) = 0, so snow never shows [SKY step 3].
     const glm::ivec2 wall = to_pixel(scene.camera, {-2.5f, 1.0f, 1.0f});
     EXPECT_EQ(mean_color(with_snow, wall, 2), mean_color(without, wall, 2));
@@ -60,11 +60,11 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
 /// The 30° test roofs below, seen from one camera: (darkest, brightest) pixel
 /// along a line down the slope at height y0 + 0.58·x, x from 0.2 to 2.8 m.
 /// A plane under the sun and the sky is lit evenly, so the two must agree.
-glm::vec2 brightness_down_the_slope(const World& world, float y0) {
+glm::vec2 brightness_down_the_slope(const World& world, const SceneVisuals& visuals, float y0) {
     ViewCamera camera;
     camera.position = {-1.0f, 4.6f, 1.8f};
     camera.look_at({1.5f, 2.9f, 0.0f});
-    const Image image = render_image(world, camera);
+    const Image image = render_image(world, visuals, camera);
     glm::vec2 range(255.0f, 0.0f);
     for (int k = 0; k <= 400; ++k) {
         const float x = 0.2f + 2.6f * static_cast<float>(k) / 400.0f;
@@ -84,6 +84,7 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
     // the flat tolerance, so without a slope-scaled one every texel row shades
     // as partly occluded and the roof shows stripes.
     World world;
+    SceneVisuals visuals;
     constexpr float slope = 0.58f; // as brightness_down_the_slope looks along
     MeshRenderable roof;
     roof.name = "roof";
@@ -94,8 +95,7 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
     roof.normals.assign(4, glm::normalize(glm::vec3(-slope, 1.0f, 0.0f)));
     roof.indices = {0, 2, 1, 0, 3, 2};
     roof.color = {0.35f, 0.12f, 0.10f};
-    world.add<MeshRenderable>(world.create(), std::move(roof));
-    world.set_resource<Environment>();
+    visuals.meshes.push_back(std::move(roof));
     OcclusionMap& map = world.set_resource<OcclusionMap>();
     map.x0 = -1.0f;
     map.z0 = -3.0f;
@@ -116,7 +116,7 @@ TEST(RenderSnowCover, SlopedRoofIsEvenlyWhiteWithoutStripes) {
         }
     }
     map.version = 1;
-    const glm::vec2 range = brightness_down_the_slope(world, 2.0f);
+    const glm::vec2 range = brightness_down_the_slope(world, visuals, 2.0f);
     EXPECT_GT(range.x, 170.0f) << "the exposed roof is snow-white";
     EXPECT_LT(range.y - range.x, 3.0f) << "brightness varies down the slope: stripes";
 }
@@ -132,6 +132,7 @@ bool background(const Image& image, glm::ivec2 px, const glm::vec3& sky) {
 /// drawn by the snow shows the sky.
 struct EavesScene {
     World world;
+    SceneVisuals visuals;
     glm::vec3 sky{0.0f};
     EavesScene() {
         SnowSurface s = flat_surface(0.0f, 0.0f, 4.0f, 2.0f, 0.05f, 0.0f);
@@ -143,14 +144,13 @@ struct EavesScene {
             }
         }
         world.add<SnowSurface>(world.create(), std::move(s));
-        Environment& env = world.set_resource<Environment>();
-        sky = env.sky * 255.0f;
+        sky = visuals.environment.sky * 255.0f;
     }
     /// Renders the view from `eye` toward `target`.
     void look(const glm::vec3& eye, const glm::vec3& target) {
         camera.position = eye;
         camera.look_at(target);
-        image = render_image(world, camera);
+        image = render_image(world, visuals, camera);
     }
     /// True when snow was drawn where p lies in the last view.
     [[nodiscard]] bool snow_at(const glm::vec3& p) const {
@@ -213,13 +213,14 @@ TEST(RenderSnowCover, LevelsOfDetailMeetWithoutCracks) {
         }
     }
     world.add<SnowSurface>(world.create(), std::move(s));
-    world.set_resource<Environment>().sky = glm::vec3(0.0f);
+    SceneVisuals visuals;
+    visuals.environment.sky = glm::vec3(0.0f);
     ViewCamera camera;
     camera.position = {0.0f, 3.5f, 22.0f};
     camera.look_at({0.0f, 0.5f, 0.0f});
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(world, camera);
+    renderer.render(world, visuals, camera);
     const Image image = renderer.read_pixels();
     EXPECT_GT(renderer.timings().surface_tiles_drawn, 60u);
     // In each column, below the first snow pixel from the top (the hills'
@@ -252,14 +253,11 @@ TEST(RenderSnowCover, SnowOnASlopedRoofIsEvenWithoutStripes) {
     def.cell = 0.1f;
     def.base_y = 2.0f;
     def.slope_x = 0.58f;
-    std::string error;
-    SnowSurface roof = make_surface(def, error);
-    ASSERT_TRUE(error.empty()) << error;
+    SnowSurface roof = make_surface(def);
     const auto units = static_cast<std::uint32_t>(std::lround(0.03 / roof.unit_height));
     std::fill(roof.snow.begin(), roof.snow.end(), units);
     world.add<SnowSurface>(world.create(), std::move(roof));
-    world.set_resource<Environment>();
-    const glm::vec2 range = brightness_down_the_slope(world, 2.03f);
+    const glm::vec2 range = brightness_down_the_slope(world, SceneVisuals{}, 2.03f);
     EXPECT_GT(range.x, 150.0f) << "the roof is covered";
     EXPECT_LT(range.y - range.x, 3.0f) << "brightness varies down the slope: stripes";
 }
@@ -269,10 +267,10 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 2u);
-    EXPECT_EQ(renderer.timings().meshes_uploaded, scene.world.count<MeshRenderable>());
-    renderer.render(scene.world, scene.camera);
+    EXPECT_EQ(renderer.timings().meshes_uploaded, scene.visuals.meshes.size());
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
     EXPECT_EQ(renderer.timings().meshes_uploaded, 0u);
     const Image before = renderer.read_pixels();
@@ -281,7 +279,7 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     for (std::uint32_t& cell : roof.snow) {
         cell += 100; // 0.2 m more snow everywhere on the roof
     }
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u) << "the 30 x 30 roof is one tile";
     const Image after = renderer.read_pixels();
@@ -290,12 +288,12 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     // One ground cell changes: only its tile of the 48 x 48 ground goes up again.
     SnowSurface& ground = scene.world.get<SnowSurface>(scene.ground_surface);
     ground.snow[ground.index(40, 3)] += 1;
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u);
 
     scene.world.destroy(scene.house_roof);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
 }
 

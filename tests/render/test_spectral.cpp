@@ -247,7 +247,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
     EXPECT_EQ(renderer.pass_names(), builtin);
     for (const std::string& v : renderer.compiled_variants()) {
@@ -259,7 +259,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     Fog fog;
     fog.puffs.push_back(FogPuff{{0.0f, 1.0f, 0.0f}, 1.0f, 0.5f, {}, 0.0f});
     scene.world.set_resource<Fog>(fog);
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> effects = {"sky",           "meshes", "snow_surfaces",
                                               "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
@@ -277,7 +277,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     // The effects removed again: their passes stay in the list but skip.
     scene.world.erase_resource<SpectralSnow>();
     scene.world.erase_resource<Fog>();
-    renderer.render(scene.world, scene.camera);
+    renderer.render(scene.world, scene.visuals, scene.camera);
     for (const PassTiming& p : renderer.timings().passes) {
         EXPECT_EQ(p.ran, p.name != "spectral_snow" && p.name != "fog_puffs" && p.name != "sky")
             << p.name;
@@ -309,8 +309,8 @@ TEST(RenderSpectral, LayerCoversTheFarFieldAndLeavesNearSurfacesAlone) {
     FixtureScene snowy;
     build_fixture(snowy);
     add_layer(snowy, 10.0f);
-    const Image a = render_image(plain.world, plain.camera);
-    const Image b = render_image(snowy.world, snowy.camera);
+    const Image a = render_image(plain.world, plain.visuals, plain.camera);
+    const Image b = render_image(snowy.world, snowy.visuals, snowy.camera);
     // Near surfaces (the crate and the house, under 10 m away) stay as they were.
     for (const glm::vec3& p : {glm::vec3(2.0f, 0.35f, 0.6f), glm::vec3(-2.5f, 1.0f, 1.0f)}) {
         const glm::vec3 d = glm::abs(mean_color(a, to_pixel(plain.camera, p), 2) -
@@ -338,6 +338,7 @@ TEST(RenderSpectral, LayerCoversTheFarFieldAndLeavesNearSurfacesAlone) {
 /// A ground 120 m wide that ends 40 m ahead of the camera, the sky above it.
 struct HorizonScene {
     World world;
+    SceneVisuals visuals;
     ViewCamera camera;
     float far_edge_z = -30.0f;
     HorizonScene() {
@@ -350,8 +351,7 @@ struct HorizonScene {
         ground.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
         ground.indices = {0, 2, 1, 0, 3, 2};
         ground.color = {0.3f, 0.3f, 0.3f};
-        world.add<MeshRenderable>(world.create(), std::move(ground));
-        world.set_resource<Environment>();
+        visuals.meshes.push_back(std::move(ground));
         camera.position = {0.0f, 3.0f, 10.0f};
         camera.look_at({0.0f, 1.5f, far_edge_z});
     }
@@ -389,12 +389,12 @@ TEST(RenderSpectral, FarFieldMeetsTheHorizonWithoutASeam) {
     HorizonScene scene;
     RenderSettings dark_ground; // bare albedo: the white layer shows on it as on the sky
     dark_ground.mesh_snow = 0.0f;
-    const Image without = render_image(scene.world, scene.camera, dark_ground);
+    const Image without = render_image(scene.world, scene.visuals, scene.camera, dark_ground);
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
     s.opacity = 0.6f;
     scene.world.set_resource<SpectralSnow>(s);
-    const Image with = render_image(scene.world, scene.camera, dark_ground);
+    const Image with = render_image(scene.world, scene.visuals, scene.camera, dark_ground);
     const std::vector<double> rows = layer_by_row(with, without);
     const int horizon = to_pixel(scene.camera, {0.0f, 0.0f, scene.far_edge_z}).y;
     ASSERT_GT(horizon, 40);
@@ -452,16 +452,16 @@ TEST(RenderSpectral, FlakesHandOverToTheLayerBeyondTheHandOverDistance) {
     settings.flake_lod = FlakeLod::never;
     auto context = headless_context();
     Renderer renderer(*context, settings);
-    renderer.render(world, camera);
+    renderer.render(world, SceneVisuals{}, camera);
     EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
     world.set_resource<SpectralSnow>(s);
-    renderer.render(world, camera);
+    renderer.render(world, SceneVisuals{}, camera);
     EXPECT_NEAR(renderer.timings().flakes_drawn, 4000.0 * (12.0 / 30.0) * (12.0 / 30.0), 60.0);
     // A start of 0 puts the layer everywhere and leaves the flakes alone.
     world.resource<SpectralSnow>().start_distance = 0.0f;
-    renderer.render(world, camera);
+    renderer.render(world, SceneVisuals{}, camera);
     EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
 }
 
@@ -476,8 +476,8 @@ TEST(RenderGolden, FarFieldTakesOverFromTheFlakesAtTheHorizon) {
     scene.world.set_resource<SpectralSnow>(s);
     RenderSettings dark_ground; // bare albedo, so the white snow shows on the ground too
     dark_ground.mesh_snow = 0.0f;
-    EXPECT_TRUE(
-        matches_golden(render_image(scene.world, scene.camera, dark_ground), "far_field_horizon"));
+    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.visuals, scene.camera, dark_ground),
+                               "far_field_horizon"));
 }
 
 TEST(RenderSpectral, AnimatesWithTheSimulationClock) {
@@ -486,9 +486,9 @@ TEST(RenderSpectral, AnimatesWithTheSimulationClock) {
     add_layer(scene, 10.0f);
     scene.world.set_resource<SimConfig>();
     scene.world.set_resource<SimClock>();
-    const Image t0 = render_image(scene.world, scene.camera);
+    const Image t0 = render_image(scene.world, scene.visuals, scene.camera);
     scene.world.resource<SimClock>().tick = 30;
-    const Image t1 = render_image(scene.world, scene.camera);
+    const Image t1 = render_image(scene.world, scene.visuals, scene.camera);
     EXPECT_GT(compare_images(t0, t1).pixels_over, 100u);
 }
 
@@ -496,7 +496,8 @@ TEST(RenderGolden, FixtureWithSpectralSnow) {
     FixtureScene scene;
     build_fixture(scene);
     add_layer(scene, 10.0f);
-    EXPECT_TRUE(matches_golden(render_image(scene.world, scene.camera), "scene_spectral"));
+    EXPECT_TRUE(
+        matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_spectral"));
 }
 
 TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
@@ -523,7 +524,7 @@ TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
     Renderer renderer(*context, settings);
     std::vector<double> pass_ms, frame_ms;
     for (int i = 0; i < 16; ++i) {
-        renderer.render(scene.world, scene.camera);
+        renderer.render(scene.world, scene.visuals, scene.camera);
         if (i == 0) {
             continue; // the first frame builds the volume
         }

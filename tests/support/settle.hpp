@@ -3,8 +3,7 @@
 /// dirty cell left.
 #pragma once
 
-#include "systems/simulation.hpp"
-#include "systems/systems.hpp"
+#include "systems/internal_access.hpp"
 
 namespace snow::test {
 
@@ -12,8 +11,8 @@ namespace snow::test {
 /// were made; returns the calls it took.
 inline int settle_surface(Simulation& sim, Entity e, int max_calls) {
     int calls = 0;
-    while (!sim.world().get<SnowSurface>(e).dirty_empty() && calls < max_calls) {
-        redistribute_system(sim.world());
+    while (!sim.surface(e).dirty_empty() && calls < max_calls) {
+        redistribute_system(InternalAccess::world(sim));
         ++calls;
     }
     return calls;

@@ -35,13 +35,13 @@ struct SnowyGround {
         d.cell = cell;
         d.spills = false;
         ground = sim.add_surface(d);
-        SnowSurface& s = sim.world().get<SnowSurface>(ground);
-        for (std::uint32_t& u : s.snow) {
-            u = depth_units;
+        for (std::uint32_t iz = 0; iz < s().nz; ++iz) {
+            for (std::uint32_t ix = 0; ix < s().nx; ++ix) {
+                sim.add_settled_snow(ground, ix, iz, depth_units);
+            }
         }
-        sim.world().resource<MassLedger>().spawned += s.settled_units();
     }
-    const SnowSurface& s() const { return sim.world().get<SnowSurface>(ground); }
+    const SnowSurface& s() const { return sim.surface(ground); }
     std::uint32_t at(float x, float z) const {
         std::uint32_t ix = 0, iz = 0;
         EXPECT_TRUE(s().cell_at(x, z, ix, iz));
@@ -117,7 +117,7 @@ TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
     const Entity b = g.sim.add_body(d);
     const std::uint64_t settled = g.s().settled_units();
     g.run(180);
-    const Body& body = g.sim.world().get<Body>(b);
+    const Body& body = g.sim.body(b);
     ASSERT_GT(body.carried, 0u);
     EXPECT_EQ(g.s().settled_units() + body.carried, settled);
     EXPECT_EQ(g.sim.mass().carried, body.carried);
@@ -125,7 +125,7 @@ TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
     EXPECT_FLOAT_EQ(body.radius, snowball_radius(0.1f, body.carried));
     const std::uint64_t carried = body.carried;
     EXPECT_EQ(g.sim.drop_snowball(b), carried);
-    EXPECT_EQ(g.sim.world().get<Body>(b).carried, 0u);
+    EXPECT_EQ(g.sim.body(b).carried, 0u);
     EXPECT_EQ(g.s().settled_units(), settled);
     g.run(10);
 }
@@ -158,7 +158,7 @@ TEST(Body, FlakesDoNotEndInsideAMovingBody) {
     for (int t = 0; t < 600; ++t) {
         g.sim.tick();
         ASSERT_TRUE(g.sim.mass().balanced());
-        const Body& body = g.sim.world().get<Body>(b);
+        const Body& body = g.sim.body(b);
         const FlakePool& f = g.sim.flakes();
         std::uint32_t inside = 0;
         for (std::uint32_t i = 0; i < f.slot_end; ++i) {
@@ -179,8 +179,8 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
         BodyDef d = ball(-1.5f, 0.0f, 0.15f);
         d.on_ground = true;
         d.snowball = true;
-        d.motion = BodyMotion{{{-1.5f, 0.0f, -1.0f}, {1.5f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.5f}},
-                              1.2f, true};
+        d.motion =
+            BodyMotion{{{-1.5f, 0.0f, -1.0f}, {1.5f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.5f}}, 1.2f, true};
         g->sim.add_body(d);
         BodyDef walker;
         walker.shape = BodyShape::capsule;
@@ -209,7 +209,7 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
     const auto error_of = [&](auto&& fn) {
         try {
             fn();
-        } catch (const std::exception& e) {
+        } catch (const SimulationError& e) {
             return std::string(e.what());
         }
         return std::string();
@@ -220,8 +220,9 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
               std::string::npos);
     const Entity b = g.sim.add_body(ball(0.0f, 1.0f, 0.2f));
     const std::uint64_t with_body = g.sim.state_hash();
-    EXPECT_NE(error_of([&] { g.sim.set_body_motion(b, BodyMotion{{}, 1.0f, true}); })
-                  .find("motion.waypoints"),
+    EXPECT_NE(error_of([&] {
+                  g.sim.set_body_motion(b, BodyMotion{{}, 1.0f, true});
+              }).find("motion.waypoints"),
               std::string::npos);
     EXPECT_NE(error_of([&] {
                   g.sim.set_body_motion(b, BodyMotion{{{0.0f, NAN, 0.0f}}, 1.0f, true});
@@ -231,9 +232,13 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
                   g.sim.set_body_motion(b, BodyMotion{{{0.0f, 0.0f, 0.0f}}, -1.0f, true});
               }).find("motion.speed"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { g.sim.move_body(b, {NAN, 0.0f, 0.0f}); }).find("move_body.position"),
+    EXPECT_NE(error_of([&] {
+                  g.sim.move_body(b, {NAN, 0.0f, 0.0f});
+              }).find("move_body.position"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { g.sim.move_body(g.ground, {0.0f, 0.0f, 0.0f}); }).find("not a living body"),
+    EXPECT_NE(error_of([&] {
+                  g.sim.move_body(g.ground, {0.0f, 0.0f, 0.0f});
+              }).find("not a living body"),
               std::string::npos);
     EXPECT_EQ(g.sim.state_hash(), with_body);
     EXPECT_NE(before, with_body);

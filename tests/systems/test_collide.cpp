@@ -1,8 +1,8 @@
 // collide_system against bounds, spheres, boxes and mesh tops ([WF §4], [SKY]).
 #include "ecs/rng.hpp"
 #include "systems/collider_grid.hpp"
+#include "systems/internal_access.hpp"
 #include "systems/random_streams.hpp"
-#include "systems/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,15 +22,17 @@ SimConfig config(std::uint32_t capacity, unsigned threads = 1) {
     return c;
 }
 
-/// Puts a flake straight into the pool (no emitter), counted as spawned.
+/// Puts a flake straight into the pool (no emitter), counted as spawned; unlike
+/// Simulation::place_flake it takes any value (collide must cope with NaN).
 std::uint32_t add_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units = 1) {
-    FlakePool& f = sim.world().resource<FlakePool>();
+    World& w = InternalAccess::world(sim);
+    FlakePool& f = w.resource<FlakePool>();
     std::uint32_t slot = 0;
     EXPECT_TRUE(f.acquire(slot));
     f.px[slot] = p.x, f.py[slot] = p.y, f.pz[slot] = p.z;
     f.vx[slot] = v.x, f.vy[slot] = v.y, f.vz[slot] = v.z;
     f.mass_units[slot] = units;
-    sim.world().resource<MassLedger>().spawned += units;
+    w.resource<MassLedger>().spawned += units;
     return slot;
 }
 
@@ -64,7 +66,7 @@ TEST(Collide, SphereRemovesFlakesAndCountsTheirMassExactly) {
     // Fast enough to jump over the whole sphere in one tick: the swept test catches it.
     add_flake(sim, {0.0f, 4.5f - 300.0f * dt, 0.0f}, {0.0f, -300.0f, 0.0f}, 100);
     const std::uint32_t outside = add_flake(sim, {3.0f, 2.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 5);
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     const MassLedger& ledger = sim.world().resource<MassLedger>();
     EXPECT_EQ(ledger.removed_sphere, 120u);
     EXPECT_EQ(ledger.removed(), 120u);
@@ -81,7 +83,7 @@ TEST(Collide, FlakesOutsideTheBoundsAreRemoved) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     add_flake(sim, {nan, 1.0f, 0.0f}, {}, 8);
     const std::uint32_t inside = add_flake(sim, {9.99f, 11.99f, -9.99f}, {}, 16);
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_bounds, 17u);
     EXPECT_EQ(sim.flakes().alive, 1u);
     EXPECT_TRUE(sim.flakes().is_alive(inside));
@@ -97,7 +99,7 @@ TEST(Collide, FlakePushedIntoABoxSideEndsOnTheFaceAndSlidesDown) {
     const std::uint32_t s = add_flake(sim, glm::vec3{-0.01f, 2.0f, 0.0f} + v0 * dt, v0);
     const glm::vec3 p_in = pos(sim, s);
     ASSERT_GT(p_in.x, box.min.x);
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     ASSERT_TRUE(sim.flakes().is_alive(s));
     EXPECT_EQ(pos(sim, s).x, box.min.x);
     EXPECT_EQ(pos(sim, s).y, p_in.y); // motion along the face is kept
@@ -107,7 +109,7 @@ TEST(Collide, FlakePushedIntoABoxSideEndsOnTheFaceAndSlidesDown) {
     EXPECT_EQ(vel(sim, s).z, v0.z);
 
     // Wind keeps pressing it against the wall while gravity pulls: it slides down the face.
-    FlakePool& f = sim.world().resource<FlakePool>();
+    FlakePool& f = InternalAccess::world(sim).resource<FlakePool>();
     float y = pos(sim, s).y;
     for (int t = 0; t < 30; ++t) {
         f.vx[s] += 3.0f * dt;
@@ -115,7 +117,7 @@ TEST(Collide, FlakePushedIntoABoxSideEndsOnTheFaceAndSlidesDown) {
         f.px[s] += f.vx[s] * dt;
         f.py[s] += f.vy[s] * dt;
         f.pz[s] += f.vz[s] * dt;
-        collide_system(sim.world());
+        collide_system(InternalAccess::world(sim));
         ASSERT_TRUE(f.is_alive(s));
         EXPECT_EQ(f.px[s], box.min.x);
         EXPECT_EQ(f.vx[s], 0.0f);
@@ -135,7 +137,7 @@ TEST(Collide, FastFlakeCannotTunnelThroughAThinRoof) {
         sim.add_box(roof);
         add_flake(sim, from + v * dt, v, 9);
         const std::uint32_t beside = add_flake(sim, glm::vec3{5.0f, 4.5f, 0.0f} + v * dt, v, 1);
-        collide_system(sim.world());
+        collide_system(InternalAccess::world(sim));
         EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 9u); // caught, bare roof
         EXPECT_TRUE(sim.flakes().is_alive(beside));
     }
@@ -144,7 +146,7 @@ TEST(Collide, FastFlakeCannotTunnelThroughAThinRoof) {
         const Entity house = sim.add_box(roof);
         sim.add_surface(top_surface(-1.0f, -1.0f, 2.0f, 2.0f, roof.max.y), house);
         const std::uint32_t s = add_flake(sim, from + v * dt, v, 9);
-        collide_system(sim.world());
+        collide_system(InternalAccess::world(sim));
         ASSERT_TRUE(sim.flakes().is_alive(s));
         // Waits at the entry point on the roof for the deposit system.
         const float t = (from.y - roof.max.y) / (-v.y * dt);
@@ -162,7 +164,7 @@ TEST(Collide, FastFlakeMeetsTheFirstRoofOnItsPath) {
     sim.add_box({{-1.0f, 5.0f, -1.0f}, {1.0f, 5.1f, 1.0f}});
     const glm::vec3 v{0.0f, -300.0f, 0.0f};
     add_flake(sim, glm::vec3{0.0f, 6.5f, 0.0f} + v * dt, v, 3);
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 3u);
     EXPECT_EQ(sim.flakes().alive, 0u);
 }
@@ -173,7 +175,7 @@ TEST(Collide, FastFlakeIsCaughtByAWallFarFromWhereItEnds) {
     sim.add_box(wall);
     const glm::vec3 v{120.0f, 0.0f, 0.0f};
     const std::uint32_t s = add_flake(sim, glm::vec3{-1.0f, 2.0f, 0.0f} + v * dt, v, 1);
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     // 0.25 m cells: the wall (x = 0) is not among the cells around the end point
     // (x = 1); only the flake's speed gets it looked at.
     ASSERT_EQ(sim.world().resource<ColliderGrid>().nx, 80u);
@@ -194,7 +196,7 @@ TEST(Collide, BoxTopWithoutSurfaceRemovesAsBareAndWithSurfaceKeepsFlakeOnTop) {
     const std::uint32_t on_surface = add_flake(sim, {-0.5f, 0.99f, 0.5f}, v, 3);
     add_flake(sim, {0.5f, 0.99f, 0.5f}, v, 5);  // holder's top, but no surface there
     add_flake(sim, {5.0f, 0.99f, 0.0f}, v, 11); // a box without surfaces
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 16u);
     ASSERT_TRUE(sim.flakes().is_alive(on_surface));
     EXPECT_EQ(pos(sim, on_surface), (glm::vec3{-0.5f, 1.0f, 0.5f}));
@@ -217,13 +219,13 @@ TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
             w.base = w.current = {3.0f, 0.0f, 0.0f};
             sim.set_wind(w);
             sim.set_occlusion(OcclusionCamera{128, tilt});
-            occlusion_system(sim.world());
+            occlusion_system(InternalAccess::world(sim));
             ASSERT_EQ(sim.world().resource<OcclusionMap>().shear_x == 0.0f, tilt == 0.0f);
             const std::uint32_t from_above =
                 add_flake(sim, {0.2f, 1.99f, 0.3f}, {0.0f, -2.0f, 0.0f}, 4);
             const std::uint32_t sideways =
                 add_flake(sim, {0.0f, 1.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 6);
-            collide_system(sim.world());
+            collide_system(InternalAccess::world(sim));
             EXPECT_TRUE(sim.flakes().is_alive(sideways));
             EXPECT_EQ(pos(sim, sideways), (glm::vec3{0.0f, 1.5f, 0.0f}));
             if (holder) {
@@ -249,7 +251,7 @@ TEST(Collide, GridIndexesManyBoxesAndRebuildsOnGeometryVersion) {
             add_flake(sim, {x + 0.25f, 0.99f + 0.01f * i, z + 0.25f}, {0.0f, -2.0f, 0.0f}, 1);
         }
     }
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 400u);
     const auto& grid = sim.world().resource<ColliderGrid>();
     EXPECT_EQ(grid.nx, 80u);
@@ -262,7 +264,7 @@ TEST(Collide, GridIndexesManyBoxesAndRebuildsOnGeometryVersion) {
     const std::uint64_t built = grid.geometry_version;
     const std::uint32_t s = add_flake(sim, {0.0f, 5.0f, 0.0f}, {}, 1);
     sim.add_sphere({0.0f, 5.0f, 0.0f}, 0.5f); // bumps GeometryVersion
-    collide_system(sim.world());
+    collide_system(InternalAccess::world(sim));
     EXPECT_NE(sim.world().resource<ColliderGrid>().geometry_version, built);
     EXPECT_FALSE(sim.flakes().is_alive(s));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_sphere, 1u);
@@ -289,7 +291,7 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
         }
     }
     sim.set_occlusion(OcclusionCamera{128, 0.0f});
-    occlusion_system(sim.world());
+    occlusion_system(InternalAccess::world(sim));
     for (std::uint32_t i = 0; i < flakes; ++i) {
         const RngKey k{11, 0, i, random_stream::test};
         const glm::vec3 p{rng_range(k, 0, -10.5f, 10.5f), rng_range(k, 1, -1.2f, 8.0f),
@@ -308,8 +310,8 @@ TEST(Collide, OneAndTwoThreadsLeaveIdenticalPoolState) {
     fill_scene(one, n);
     fill_scene(two, n);
     const FlakePool before = one.flakes();
-    collide_system(one.world());
-    collide_system(two.world());
+    collide_system(InternalAccess::world(one));
+    collide_system(InternalAccess::world(two));
     const FlakePool& a = one.flakes();
     const FlakePool& b = two.flakes();
     EXPECT_EQ(a.px, b.px);

@@ -35,13 +35,9 @@ CoverDef cover_over(float half, float cell) {
     return d;
 }
 
-const SnowSurface& surface(const Simulation& sim, Entity e) {
-    return sim.world().get<SnowSurface>(e);
-}
-
 /// Depth (m) of the cover's cell under world (x, z).
 float depth_at(const Simulation& sim, Entity cover, float x, float z) {
-    const SnowSurface& s = surface(sim, cover);
+    const SnowSurface& s = sim.surface(cover);
     std::uint32_t ix = 0, iz = 0;
     if (!s.cell_at(x, z, ix, iz)) {
         return -1.0f;
@@ -51,7 +47,7 @@ float depth_at(const Simulation& sim, Entity cover, float x, float z) {
 
 /// Base height (m) of the cover's cell under (x, z); -inf for void.
 float base_at(const Simulation& sim, Entity cover, float x, float z) {
-    const SnowSurface& s = surface(sim, cover);
+    const SnowSurface& s = sim.surface(cover);
     std::uint32_t ix = 0, iz = 0;
     if (!s.cell_at(x, z, ix, iz) || s.is_void(s.index(ix, iz))) {
         return -INFINITY;
@@ -111,7 +107,7 @@ TEST(SnowCover, ExcessAtABoxEdgeSpillsOntoTheGround) {
     run_balanced(sim, 1800);
     EXPECT_GT(sim.counters().spilled_units, 0u);
     // The box top holds at most about its edge limit at its rim.
-    const SnowSurface& s = surface(sim, cover);
+    const SnowSurface& s = sim.surface(cover);
     std::uint32_t ix = 0, iz = 0;
     ASSERT_TRUE(s.cell_at(0.49f, 0.0f, ix, iz));
     EXPECT_LE(s.snow[s.index(ix, iz)], s.edge_limit_units);
@@ -180,7 +176,7 @@ TEST(SnowCover, FastFlakesDoNotTunnelThroughAThinRoof) {
         ASSERT_TRUE(sim.mass().balanced());
     }
     EXPECT_GT(depth_at(sim, cover, 0.0f, 0.0f), 0.0f);
-    EXPECT_GT(surface(sim, cover).settled_units(), 0u);
+    EXPECT_GT(sim.surface(cover).settled_units(), 0u);
 }
 
 TEST(SnowCover, OneAndTwoThreadsGiveTheSameState) {
@@ -210,7 +206,7 @@ TEST(SnowCover, RestoreFromBeforeTheFirstBuildReplaysExactly) {
     sim.restore(*start);
     sim.run(600);
     EXPECT_EQ(sim.state_hash(), straight);
-    EXPECT_GT(surface(sim, cover).settled_units(), 0u) << "the cover was built again";
+    EXPECT_GT(sim.surface(cover).settled_units(), 0u) << "the cover was built again";
 }
 
 TEST(SnowCover, DeclaredSurfacesKeepTheirColumns) {
@@ -227,7 +223,7 @@ TEST(SnowCover, DeclaredSurfacesKeepTheirColumns) {
     run_balanced(sim, 900);
     EXPECT_EQ(base_at(sim, cover, -1.5f, -1.5f), -INFINITY) << "the ground rectangle's column";
     EXPECT_GT(depth_at(sim, cover, 0.0f, 0.0f), 0.0f) << "the sphere above it is the cover's";
-    EXPECT_GT(surface(sim, g).settled_units(), 0u);
+    EXPECT_GT(sim.surface(g).settled_units(), 0u);
 }
 
 TEST(SnowCover, BadDefinitionsNameTheField) {
@@ -235,7 +231,7 @@ TEST(SnowCover, BadDefinitionsNameTheField) {
     const auto error_of = [&](CoverDef d) {
         try {
             sim.add_cover(d);
-        } catch (const std::exception& e) {
+        } catch (const SimulationError& e) {
             return std::string(e.what());
         }
         return std::string();

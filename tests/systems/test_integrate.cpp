@@ -13,14 +13,7 @@ struct OneFlake {
     Simulation sim;
     explicit OneFlake(const SimConfig& cfg, float c, glm::vec3 p = {0, 5, 0}, glm::vec3 v = {})
         : sim(cfg) {
-        FlakePool& f = sim.world().resource<FlakePool>();
-        std::uint32_t slot = 0;
-        EXPECT_TRUE(f.acquire(slot));
-        f.px[slot] = p.x, f.py[slot] = p.y, f.pz[slot] = p.z;
-        f.vx[slot] = v.x, f.vy[slot] = v.y, f.vz[slot] = v.z;
-        f.k_over_m[slot] = c;
-        f.mass_units[slot] = 1;
-        sim.world().resource<MassLedger>().spawned = 1;
+        EXPECT_EQ(sim.place_flake({p, v, c, 0.01f, 1}), 0u);
     }
     [[nodiscard]] glm::vec3 vel() const {
         const FlakePool& f = sim.flakes();

@@ -108,18 +108,18 @@ namespace {
 /// Puts snow over the edge limit along one border of every spilling surface
 /// (as an embedder might), so the next tick spills.
 void overload_edges(Simulation& sim) {
-    World& w = sim.world();
-    w.each<SnowSurface>([&](Entity, SnowSurface& s) {
-        if (!s.spills) {
-            return;
-        }
-        const std::uint32_t units = 2 * s.edge_limit_units + 5000;
-        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
-            s.snow[s.index(ix, 0)] += units;
-            w.resource<MassLedger>().spawned += units;
-            s.mark_dirty(ix, 0);
+    std::vector<Entity> spilling;
+    sim.world().each<SnowSurface>([&](Entity e, const SnowSurface& s) {
+        if (s.spills) {
+            spilling.push_back(e);
         }
     });
+    for (const Entity e : spilling) {
+        const SnowSurface& s = sim.surface(e);
+        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+            sim.add_settled_snow(e, ix, 0, 2 * s.edge_limit_units + 5000);
+        }
+    }
 }
 
 /// The yard with everything switched on: emitter, walking and gusting wind,
@@ -160,8 +160,8 @@ std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     walker.radius = 0.25f;
     walker.half_height = 0.6f;
     walker.on_ground = true;
-    walker.motion = BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}},
-                               1.5f, true};
+    walker.motion =
+        BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}}, 1.5f, true};
     sim->add_body(walker);
     WindFieldDef field; // a coarse one: the field's steps and sampling allocate nothing
     field.cells_x = field.cells_z = 16;

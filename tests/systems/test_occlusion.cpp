@@ -1,5 +1,5 @@
 // The occlusion ("sky") camera of [SKY]: depth map from above, exposure, tilt, refresh.
-#include "systems/simulation.hpp"
+#include "systems/internal_access.hpp"
 
 #include <gtest/gtest.h>
 
@@ -62,7 +62,7 @@ struct House {
 
     explicit House(float tilt = 0.0f) {
         sim.set_occlusion(OcclusionCamera{160, tilt});
-        occlusion_system(sim.world());
+        occlusion_system(InternalAccess::world(sim));
     }
 };
 
@@ -98,7 +98,7 @@ TEST(Occlusion, UnderTheRoofIsNotExposedOnTheRoofIs) {
 
     // Per cell of the ground: exactly the roof's 5 × 5 m footprint is in its shadow.
     std::vector<float> exposure;
-    const SnowSurface& g = h.sim.world().get<SnowSurface>(h.ground_surface);
+    const SnowSurface& g = h.sim.surface(h.ground_surface);
     surface_exposure(m, g, exposure);
     ASSERT_EQ(exposure.size(), g.cell_count());
     std::size_t shaded_under_roof = 0, shaded_elsewhere = 0;
@@ -124,13 +124,13 @@ TEST(Occlusion, RefreshesOnceThenOnlyWhenGeometryChanges) {
     w.base = w.current = {3.0f, 0.0f, 1.0f};
     h.sim.set_wind(w);
     for (int i = 0; i < 3; ++i) {
-        occlusion_system(h.sim.world()); // tilt 0: the wind does not matter
+        occlusion_system(InternalAccess::world(h.sim)); // tilt 0: the wind does not matter
     }
     EXPECT_EQ(refreshes(), 1u);
     EXPECT_EQ(map_of(h.sim).version, 1u);
     const Entity shed = h.sim.add_box({{-8.0f, 0.0f, -8.0f}, {-6.0f, 1.0f, -6.0f}});
-    occlusion_system(h.sim.world());
-    occlusion_system(h.sim.world());
+    occlusion_system(InternalAccess::world(h.sim));
+    occlusion_system(InternalAccess::world(h.sim));
     EXPECT_EQ(refreshes(), 2u);
     EXPECT_EQ(map_of(h.sim).top_id[texel(map_of(h.sim), -7.0f, -7.0f)], shed.bits);
 }
@@ -144,7 +144,7 @@ TEST(Occlusion, TiltShadowsTheLeeSideAndFollowsTheWind) {
     w.base = w.current = {3.0f, 0.0f, 0.0f};
     sim.set_wind(w);
     sim.set_occlusion(OcclusionCamera{160, 0.0f});
-    occlusion_system(sim.world());
+    occlusion_system(InternalAccess::world(sim));
     const auto exposed = [&](float x, float z) {
         return occlusion_exposure(sim.world().resource<OcclusionMap>(), x, 0.0f, z);
     };
@@ -152,7 +152,7 @@ TEST(Occlusion, TiltShadowsTheLeeSideAndFollowsTheWind) {
     EXPECT_EQ(exposed(-1.5f, 0.0f), 1.0f);
 
     sim.set_occlusion(OcclusionCamera{160, tilt});
-    occlusion_system(sim.world());
+    occlusion_system(InternalAccess::world(sim));
     EXPECT_EQ(exposed(1.5f, 0.0f), 0.0f);  // lee side (downwind) now in the box's shadow
     EXPECT_EQ(exposed(2.5f, 0.0f), 1.0f);  // beyond the shadow (2 m tall → 1 m long)
     EXPECT_EQ(exposed(-1.5f, 0.0f), 1.0f); // windward side stays open
@@ -160,11 +160,13 @@ TEST(Occlusion, TiltShadowsTheLeeSideAndFollowsTheWind) {
 
     const auto refreshes = [&] { return sim.counters().occlusion_refreshes; };
     const std::uint64_t before = refreshes();
-    sim.world().resource<Wind>().current = {3.0f, 0.0f, 0.05f}; // ~1°: same direction step
-    occlusion_system(sim.world());
+    w.current = {3.0f, 0.0f, 0.05f}; // ~1°: same direction step
+    sim.set_wind(w);
+    occlusion_system(InternalAccess::world(sim));
     EXPECT_EQ(refreshes(), before);
-    sim.world().resource<Wind>().current = {0.0f, 0.0f, -2.0f}; // wind turns to -z
-    occlusion_system(sim.world());
+    w.current = {0.0f, 0.0f, -2.0f}; // wind turns to -z
+    sim.set_wind(w);
+    occlusion_system(InternalAccess::world(sim));
     EXPECT_EQ(refreshes(), before + 1);
     EXPECT_EQ(exposed(1.5f, 0.0f), 1.0f);
     EXPECT_EQ(exposed(0.0f, -1.5f), 0.0f); // the shadow moved with the wind

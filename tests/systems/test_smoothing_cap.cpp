@@ -18,9 +18,7 @@ struct Pile {
     Simulation sim;
     Entity e;
     explicit Pile(std::uint32_t cap) : sim(config(cap)), e(sim.add_surface(square())) {
-        SnowSurface& s = surface();
-        s.snow[s.index(16, 16)] = 2'000'000; // far over the Laplacian cap: many steps to spread
-        s.mark_dirty(16, 16);
+        sim.add_settled_snow(e, 16, 16, 2'000'000); // far over the Laplacian cap: many steps
     }
     static SimConfig config(std::uint32_t cap) {
         SimConfig c;
@@ -33,14 +31,14 @@ struct Pile {
         d.spills = false;
         return d;
     }
-    SnowSurface& surface() { return sim.world().get<SnowSurface>(e); }
+    [[nodiscard]] const SnowSurface& surface() const { return sim.surface(e); }
     int settle(int max_calls) { return test::settle_surface(sim, e, max_calls); }
 };
 
 TEST(SmoothingCap, OneCallRunsAtMostTheCap) {
     for (const std::uint32_t cap : {1u, 4u, 64u}) {
         Pile p(cap);
-        redistribute_system(p.sim.world());
+        redistribute_system(InternalAccess::world(p.sim));
         EXPECT_EQ(p.sim.counters().smoothing_iterations, cap) << "cap " << cap;
         EXPECT_FALSE(p.surface().dirty_empty()) << "cap " << cap << ": the pile still moves";
         EXPECT_EQ(p.surface().settled_units(), 2'000'000u);
@@ -65,7 +63,7 @@ TEST(SmoothingCap, ZeroOrHugeIsRejectedNamingTheField) {
         try {
             Simulation sim(c);
             FAIL() << "cap " << cap << " accepted";
-        } catch (const SnowError& e) {
+        } catch (const SimulationError& e) {
             EXPECT_NE(std::string(e.what()).find("simulation.smoothing_iterations"),
                       std::string::npos)
                 << e.what();

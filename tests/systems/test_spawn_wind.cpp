@@ -136,35 +136,35 @@ TEST(SimulationApi, BadInputIsRejectedAndStateUnchanged) {
     const std::uint64_t before = sim.state_hash();
     Emitter bad = e;
     bad.rate = std::nanf("");
-    EXPECT_THROW(sim.add_emitter(bad), SnowError);
+    EXPECT_THROW(sim.add_emitter(bad), SimulationError);
     bad = e;
     bad.mass_min_g = -1.0f;
-    EXPECT_THROW(sim.add_emitter(bad), SnowError);
+    EXPECT_THROW(sim.add_emitter(bad), SimulationError);
     Wind w;
     w.base.x = INFINITY;
-    EXPECT_THROW(sim.set_wind(w), SnowError);
-    EXPECT_THROW(sim.add_sphere({0, 0, 0}, -1.0f), SnowError);
-    EXPECT_THROW(sim.add_box({{1, 1, 1}, {0, 0, 0}}), SnowError);
-    EXPECT_THROW(sim.add_mesh_collider({{0, 0, 0}, {1, 0, 0}}), SnowError);
+    EXPECT_THROW(sim.set_wind(w), SimulationError);
+    EXPECT_THROW(sim.add_sphere({0, 0, 0}, -1.0f), SimulationError);
+    EXPECT_THROW(sim.add_box({{1, 1, 1}, {0, 0, 0}}), SimulationError);
+    EXPECT_THROW(sim.add_mesh_collider({{0, 0, 0}, {1, 0, 0}}), SimulationError);
     SurfaceDef s;
     s.cell = 0.0f;
-    EXPECT_THROW(sim.add_surface(s), SnowError);
-    EXPECT_THROW(sim.remove(null_entity), SnowError);
+    EXPECT_THROW(sim.add_surface(s), SimulationError);
+    EXPECT_THROW(sim.remove(null_entity), SimulationError);
     EXPECT_EQ(sim.state_hash(), before);
     SimConfig c;
     c.dt = -0.1f;
-    EXPECT_THROW(Simulation{c}, SnowError);
+    EXPECT_THROW(Simulation{c}, SimulationError);
     c.dt = std::nanf("");
-    EXPECT_THROW(Simulation{c}, SnowError);
+    EXPECT_THROW(Simulation{c}, SimulationError);
     c = SimConfig{};
     c.threads = 0;
-    EXPECT_THROW(Simulation{c}, SnowError);
+    EXPECT_THROW(Simulation{c}, SimulationError);
     try {
         Emitter named = e;
         named.size_min = -2.0f;
         sim.add_emitter(named);
         FAIL();
-    } catch (const SnowError& err) {
+    } catch (const SimulationError& err) {
         EXPECT_NE(std::string(err.what()).find("emitter.size_min"), std::string::npos);
     }
 }

@@ -1,6 +1,6 @@
 // spill: [WF §3], snow over an edge limit is emitted into the scene and
 // falls onto the surfaces below; mass moves from settled to airborne exactly.
-#include "systems/simulation.hpp"
+#include "systems/internal_access.hpp"
 #include "systems/units.hpp"
 
 #include <gtest/gtest.h>
@@ -40,12 +40,10 @@ struct House {
         roof = sim.add_surface(rect(-1.0f, -1.0f, 2.0f, 2.0f, 1.0f, roof_spills), box);
         porch = sim.add_surface(rect(-2.0f, -1.0f, 1.0f, 2.0f, 0.5f, false));
     }
-    SnowSurface& s(Entity e) { return sim.world().get<SnowSurface>(e); }
-    /// Settled snow put on a roof cell (it is already on the books as spawned).
+    [[nodiscard]] const SnowSurface& s(Entity e) const { return sim.surface(e); }
+    /// Settled snow put on a roof cell.
     void load(Entity e, std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
-        s(e).snow[s(e).index(ix, iz)] += units;
-        s(e).mark_dirty(ix, iz);
-        sim.world().resource<MassLedger>().spawned += units;
+        sim.add_settled_snow(e, ix, iz, units);
     }
 };
 
@@ -91,10 +89,10 @@ TEST(Spill, FlakesAppearHalfACellOutsideAtTheSnowTop) {
     em.fall_speed_min = 1.0f;
     em.fall_speed_max = 3.0f;
     h.sim.add_emitter(em);
-    SnowSurface& r = h.s(h.roof);
+    const SnowSurface& r = h.s(h.roof);
     h.load(h.roof, r.nx - 1, 0, 2000 + 2500); // a corner: it sheds diagonally outward
     const float top = r.top_y(r.index(r.nx - 1, 0));
-    spill_system(h.sim.world());
+    spill_system(InternalAccess::world(h.sim));
     const FlakePool& f = h.sim.flakes();
     ASSERT_EQ(f.alive, 3u); // 2500 units: 1000 + 1000 + 500
     std::uint32_t units = 0;
@@ -115,9 +113,9 @@ TEST(Spill, FlakesAppearHalfACellOutsideAtTheSnowTop) {
 
 TEST(Spill, FullPoolLeavesTheSnowOnTheEdge) {
     House h(true, 2);
-    SnowSurface& r = h.s(h.roof);
+    const SnowSurface& r = h.s(h.roof);
     h.load(h.roof, 5, 0, 2000 + 5000);
-    spill_system(h.sim.world());
+    spill_system(InternalAccess::world(h.sim));
     EXPECT_EQ(h.sim.flakes().alive, 2u);
     EXPECT_EQ(h.sim.counters().spilled_units, 2000u);
     EXPECT_EQ(r.snow[r.index(5, 0)], 5000u);

@@ -2,6 +2,7 @@
 // sheltering the lee of a box as surface-mounted cube experiments report
 // (Martinuzzi & Tropea 1993: reattachment about 1.6 h behind the cube),
 // felt by flakes, deterministic across threads and restore.
+#include "systems/internal_access.hpp"
 #include "systems/sample_scenes.hpp"
 #include "systems/simulation.hpp"
 #include "systems/wind_field_solver.hpp"
@@ -101,7 +102,7 @@ TEST(WindField, BadDefinitionsNameTheFieldAndChangeNothing) {
         try {
             sim.set_wind_field(d);
             ADD_FAILURE() << "accepted a bad " << field;
-        } catch (const SnowError& e) {
+        } catch (const SimulationError& e) {
             EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
         }
         EXPECT_FALSE(sim.world().has_resource<WindField>());
@@ -173,8 +174,9 @@ TEST(WindField, FlakesInTheLeeDriftLessThanInTheOpen) {
     // to its side: the sheltered one is carried downwind more slowly.
     auto sim = cube_in_wind(true);
     sim->run(20 * 60);
-    FlakePool& f = sim->world().resource<FlakePool>();
-    const glm::vec3 start[2] = {{cube + 0.5f, 0.5f * cube, 0.0f}, {cube + 0.5f, 0.5f * cube, -4.5f}};
+    FlakePool& f = InternalAccess::world(*sim).resource<FlakePool>();
+    const glm::vec3 start[2] = {{cube + 0.5f, 0.5f * cube, 0.0f},
+                                {cube + 0.5f, 0.5f * cube, -4.5f}};
     std::uint32_t slot[2];
     for (int i = 0; i < 2; ++i) {
         ASSERT_TRUE(f.acquire(slot[i]));
@@ -202,8 +204,8 @@ TEST(WindField, OpenGroundKeepsTheFreeStream) {
         for (float y = 0.25f; y < 8.0f; y += 1.0f) {
             for (float z = -5.5f; z < 6.0f; z += 1.0f) {
                 const glm::vec3 v = f.at(x, y, z);
-                worst = std::max({worst, std::abs(v.x - free_stream), std::abs(v.y),
-                                  std::abs(v.z)});
+                worst =
+                    std::max({worst, std::abs(v.x - free_stream), std::abs(v.y), std::abs(v.z)});
             }
         }
     }
@@ -217,7 +219,8 @@ TEST(WindField, ProjectionLeavesTheAirNearlyIncompressible) {
     // the free stream carries through one of its faces.
     auto sim = yard_in_field(1);
     const WindField& f = field(*sim);
-    const double edge = std::cbrt(1.0 / (static_cast<double>(f.inv_cell.x) * f.inv_cell.y * f.inv_cell.z));
+    const double edge =
+        std::cbrt(1.0 / (static_cast<double>(f.inv_cell.x) * f.inv_cell.y * f.inv_cell.z));
     double worst = 0.0;
     for (int t = 0; t < 6; ++t) {
         sim->run(100);

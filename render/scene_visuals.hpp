@@ -1,6 +1,8 @@
-/// @file visuals.hpp
-/// @brief Plain data the renderer reads: meshes, lights, the camera. The
-/// simulation never reads these; they live here so a scene is one World.
+/// @file scene_visuals.hpp
+/// @brief What a scene looks like beyond the simulation: meshes, lights, the
+/// camera it starts with, ambient and sky. The scene loader returns it beside
+/// the Simulation and the renderer reads it; the simulation never does, so it
+/// holds no GL and no simulation state (plain data, header only).
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -11,7 +13,7 @@
 
 namespace snow {
 
-/// Component: a triangle mesh in world space.
+/// A triangle mesh in world space.
 struct MeshRenderable {
     std::string name;
     std::vector<glm::vec3> positions;
@@ -20,14 +22,14 @@ struct MeshRenderable {
     glm::vec3 color{0.6f, 0.6f, 0.6f};
 };
 
-/// Component: a coloured point light ([WF §5] uses three).
+/// A coloured point light ([WF §5] uses three).
 struct PointLight {
     glm::vec3 position{0.0f, 5.0f, 0.0f};
     glm::vec3 color{1.0f, 1.0f, 1.0f};
     float intensity = 1.0f;
 };
 
-/// World resource: the view the scene starts with.
+/// The view the scene starts with.
 struct CameraDef {
     glm::vec3 position{0.0f, 4.0f, 14.0f};
     glm::vec3 target{0.0f, 1.5f, 0.0f};
@@ -35,10 +37,18 @@ struct CameraDef {
     float near_plane = 0.05f, far_plane = 200.0f;
 };
 
-/// World resource: ambient light and sky colour.
+/// Ambient light and sky colour.
 struct Environment {
     glm::vec3 ambient{0.18f, 0.2f, 0.24f};
     glm::vec3 sky{0.55f, 0.62f, 0.7f};
+};
+
+/// Everything the renderer draws besides the simulation's own state, in draw order.
+struct SceneVisuals {
+    std::vector<MeshRenderable> meshes;
+    std::vector<PointLight> lights; ///< the renderer uses the first 8
+    CameraDef camera;
+    Environment environment;
 };
 
 } // namespace snow

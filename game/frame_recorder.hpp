@@ -1,0 +1,35 @@
+/// @file frame_recorder.hpp
+/// @brief What snow_game writes to disk: headless frames as numbered PNGs
+/// (and a video of them when ffmpeg is installed), and window screenshots.
+#pragma once
+
+#include <snow/render.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace snow {
+
+class FrameRecorder {
+  public:
+    /// Frames go to `dir` (created if missing) as frame_00000.png, frame_00001.png, ...
+    explicit FrameRecorder(std::string dir);
+
+    /// Writes the next numbered frame; throws RenderError naming the file on failure.
+    void write(const Image& frame);
+    [[nodiscard]] std::uint64_t frames() const { return frames_; }
+    [[nodiscard]] const std::string& dir() const { return dir_; }
+    /// Encodes the frames written so far into <dir>/snow.mp4 (30 frames/s) if
+    /// ffmpeg is on the PATH; returns the video's path, or nothing.
+    [[nodiscard]] std::optional<std::string> encode_video() const;
+
+  private:
+    std::string dir_;
+    std::uint64_t frames_ = 0;
+};
+
+/// Writes screenshot number `n` to screenshots/snow_<n>.png; returns its absolute path.
+[[nodiscard]] std::string save_screenshot(const Image& image, std::uint64_t n);
+
+} // namespace snow
