@@ -39,7 +39,7 @@ void occlusion_refresh(benchmark::State& state) {
     sim->set_occlusion(cam);
     World& w = sim->world();
     for (auto _ : state) {
-        ++w.resource<GeometryVersion>().version; // forces the rebuild
+        ++w.resource<SourceVersions>().solids; // forces the rebuild
         occlusion_system(w);
     }
     state.counters["refreshes"] = static_cast<double>(sim->counters().occlusion_refreshes) /

@@ -49,6 +49,43 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     return sim;
 }
 
+std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
+    YardOptions o;
+    o.threads = threads;
+    o.ground_cells = 64;
+    o.max_flakes = 60000;
+    o.prefill = 40000;
+    o.emitter_rate = 6000.0f;
+    auto sim = make_yard(o);
+    Wind wind;
+    wind.base = wind.current = {2.0f, 0.0f, 0.5f};
+    wind.walk = 1.5f;
+    wind.max_deviation = 2.0f;
+    wind.gust_strength = 3.0f;
+    wind.gust_rate = 0.8f;
+    wind.gust_duration = 0.7f;
+    sim->set_wind(wind);
+    const glm::vec3 a{-6.0f, 2.0f, 1.0f}, b{-2.0f, 2.0f, 1.0f}, c{-2.0f, 2.5f, 5.0f},
+        d{-6.0f, 2.5f, 5.0f};
+    const Entity shelter = sim->add_mesh_collider({a, b, c, a, c, d});
+    SurfaceDef roof;
+    roof.x0 = a.x;
+    roof.z0 = a.z;
+    roof.size_x = b.x - a.x;
+    roof.size_z = d.z - a.z;
+    roof.cell = 0.1f;
+    roof.base_y = a.y;
+    roof.slope_z = (d.y - a.y) / (d.z - a.z);
+    roof.edge_limit = 0.0005f;
+    sim->add_surface(roof, shelter);
+    sim->add_mesh_collider({{3.0f, 1.0f, -6.0f}, {6.0f, 1.5f, -6.0f}, {4.5f, 2.5f, -3.0f}});
+    OcclusionCamera cam;
+    cam.resolution = 96;
+    cam.tilt = 0.5f;
+    sim->set_occlusion(cam);
+    return sim;
+}
+
 void prefill_flakes(Simulation& sim, std::uint32_t count) {
     const SimConfig& cfg = sim.config();
     FlakePool& f = sim.world().resource<FlakePool>();

@@ -26,6 +26,14 @@ struct YardOptions {
 /// roof, a sphere (snowman), steady wind along +x, an emitter.
 [[nodiscard]] std::unique_ptr<Simulation> make_yard(const YardOptions& o = {});
 
+/// The yard with every kind of hidden state switched on, for the tests of
+/// snapshots and allocation: 40000 prefilled flakes (more than two chunks, so
+/// two threads share the work) and a heavy emitter; a walking, gusting wind;
+/// a mesh shelter whose snow-holding roof spills almost at once and a bare
+/// mesh tent, both seen through a tilted sky camera whose lean follows the
+/// wind.
+[[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads);
+
 /// Places `count` airborne flakes uniformly in the upper part of the bounds
 /// (deterministic in the seed); for benchmarks at a fixed flake count.
 void prefill_flakes(Simulation& sim, std::uint32_t count);

@@ -1,11 +1,10 @@
 #include "systems/simulation.hpp"
 
-#include "ecs/state_hash.hpp"
 #include "systems/jobs.hpp"
+#include "systems/limits.hpp"
 #include "systems/validation.hpp"
 
 #include <cmath>
-#include <optional>
 
 namespace snow {
 
@@ -29,7 +28,7 @@ Simulation::Simulation(const SimConfig& config) {
     world_.set_resource<SimClock>();
     world_.set_resource<MassLedger>();
     world_.set_resource<SimCounters>();
-    world_.set_resource<GeometryVersion>();
+    world_.set_resource<SourceVersions>();
     world_.set_resource<FlakePool>().reset(config.max_flakes);
     jobs_ = std::make_unique<JobPool>(config.threads);
     world_.set_resource<Jobs>(Jobs{jobs_.get()});
@@ -49,10 +48,6 @@ void Simulation::build_schedule() {
     schedule_.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule_.add("spill", spill_system, {needs<SnowSurface>()});
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
-}
-
-void Simulation::bump_geometry() {
-    ++world_.resource<GeometryVersion>().version;
 }
 
 Entity Simulation::add_emitter(const Emitter& e) {
@@ -84,7 +79,7 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null()) {
         world_.add<SnowHolder>(owner);
     }
-    bump_geometry();
+    ++world_.resource<SourceVersions>().surfaces;
     return id;
 }
 
@@ -98,7 +93,7 @@ Entity Simulation::add_box(const Aabb& box) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<BoxCollider>(id, BoxCollider{box});
-    bump_geometry();
+    ++world_.resource<SourceVersions>().solids;
     return id;
 }
 
@@ -109,7 +104,7 @@ Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<SphereCollider>(id, SphereCollider{center, radius});
-    bump_geometry();
+    ++world_.resource<SourceVersions>().solids;
     return id;
 }
 
@@ -126,23 +121,27 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
     // Flakes meet meshes only through the sky map (seed 004): a mesh needs one.
+    auto& versions = world_.resource<SourceVersions>();
     if (!world_.has_resource<OcclusionCamera>()) {
         world_.set_resource<OcclusionCamera>();
+        ++versions.occlusion;
     }
-    bump_geometry();
+    ++versions.solids;
     return id;
 }
 
 void Simulation::set_occlusion(const OcclusionCamera& cam) {
     std::string e;
-    if (cam.resolution < 1 || cam.resolution > 4096) {
-        check::fail(e, "occlusion.resolution", "in [1, 4096]", cam.resolution);
+    if (cam.resolution < 1 || cam.resolution > max_occlusion_resolution) {
+        check::fail(e, "occlusion.resolution",
+                    "in [1, " + std::to_string(max_occlusion_resolution) + "]", cam.resolution);
     }
     check::finite(e, "occlusion.tilt", cam.tilt);
-    check::at_most(e, "occlusion.tilt (magnitude, radians)", std::abs(cam.tilt), 1.2);
+    check::at_most(e, "occlusion.tilt (magnitude, radians)", std::abs(cam.tilt),
+                   max_occlusion_tilt);
     throw_if(e);
     world_.set_resource<OcclusionCamera>(cam);
-    bump_geometry();
+    ++world_.resource<SourceVersions>().occlusion;
 }
 
 void Simulation::set_fog(const Fog& fog) {
@@ -160,6 +159,11 @@ void Simulation::remove(Entity e) {
         throw SnowError("remove: stale or null entity handle");
     }
     auto& ledger = world_.resource<MassLedger>();
+    auto& versions = world_.resource<SourceVersions>();
+    if (world_.has<BoxCollider>(e) || world_.has<SphereCollider>(e) ||
+        world_.has<MeshCollider>(e)) {
+        ++versions.solids;
+    }
     // Surfaces lying on a removed solid go with it; their snow leaves the books as removed.
     std::vector<Entity> doomed{e};
     world_.each<SurfaceOf>([&](Entity s, const SurfaceOf& of) {
@@ -167,13 +171,15 @@ void Simulation::remove(Entity e) {
             doomed.push_back(s);
         }
     });
+    bool surfaces_gone = false;
     for (const Entity d : doomed) {
         if (const auto* s = world_.try_get<SnowSurface>(d)) {
             ledger.removed_surface += s->settled_units();
+            surfaces_gone = true;
         }
         world_.destroy(d);
     }
-    bump_geometry();
+    versions.surfaces += surfaces_gone ? 1 : 0;
 }
 
 void Simulation::set_integrator(Integrator i) {
@@ -192,36 +198,6 @@ void Simulation::run(std::uint64_t ticks) {
     for (std::uint64_t i = 0; i < ticks; ++i) {
         tick();
     }
-}
-
-std::uint64_t Simulation::state_hash() const {
-    StateHasher h;
-    h.value(world_.resource<SimClock>().tick);
-    const auto& ledger = world_.resource<MassLedger>();
-    h.value(ledger.spawned);
-    h.value(ledger.removed());
-    const FlakePool& f = world_.resource<FlakePool>();
-    for (std::uint32_t i = 0; i < f.capacity(); ++i) {
-        if (!f.is_alive(i)) {
-            continue;
-        }
-        h.value(i);
-        for (const auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
-            h.value((*a)[i]);
-        }
-        h.value(f.mass_units[i]);
-    }
-    h.span(std::span<const std::uint32_t>(f.free_stack));
-    world_.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
-        h.value(e.bits);
-        h.span(std::span<const std::uint32_t>(s.snow));
-    });
-    if (const auto* w = world_.try_resource<Wind>()) {
-        h.value(w->current);
-        h.value(w->deviation);
-        h.value(w->gust_left);
-    }
-    return h.digest();
 }
 
 MassReport Simulation::mass() const {
@@ -251,40 +227,6 @@ std::uint64_t Simulation::nonfinite_count() const {
         }
     }
     return n;
-}
-
-std::unique_ptr<Snapshot> Simulation::save() const {
-    auto s = std::make_unique<Snapshot>();
-    s->flakes = world_.resource<FlakePool>();
-    s->clock = world_.resource<SimClock>();
-    s->ledger = world_.resource<MassLedger>();
-    if (const auto* w = world_.try_resource<Wind>()) {
-        s->wind = *w;
-    }
-    world_.each<SnowSurface>(
-        [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
-    return s;
-}
-
-void Simulation::restore(const Snapshot& s) {
-    for (const auto& [e, surf] : s.surfaces) {
-        if (!world_.has<SnowSurface>(e)) {
-            throw SnowError("restore: snapshot belongs to a different scene (surface missing)");
-        }
-    }
-    FlakePool& pool = world_.resource<FlakePool>();
-    pool = s.flakes;
-    pool.free_stack.reserve(pool.capacity()); // keep release() allocation-free
-    world_.resource<SimClock>() = s.clock;
-    world_.resource<MassLedger>() = s.ledger;
-    if (s.wind) {
-        world_.set_resource<Wind>(*s.wind);
-    } else {
-        world_.erase_resource<Wind>();
-    }
-    for (const auto& [e, surf] : s.surfaces) {
-        world_.get<SnowSurface>(e) = surf;
-    }
 }
 
 } // namespace snow

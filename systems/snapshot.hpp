@@ -5,8 +5,10 @@
 #include "ecs/entity.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
+#include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
+#include "systems/systems.hpp"
 #include "systems/wind.hpp"
 
 #include <optional>
@@ -16,12 +18,16 @@
 namespace snow {
 
 /// Everything a tick can change. Geometry and settings are not included: a
-/// snapshot restores onto the same scene it was taken from.
+/// snapshot restores onto the same scene it was taken from. Caches are not
+/// included either: they rebuild from their sources (source_versions.hpp).
 struct Snapshot {
     FlakePool flakes;
     SimClock clock;
     MassLedger ledger;
-    std::optional<Wind> wind;
+    SimCounters counters;
+    std::optional<Wind> wind;          ///< its walk, gust and settings
+    std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
+    /// Snow and pending smoothing of every surface, by entity.
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
 };
 

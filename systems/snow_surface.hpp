@@ -4,6 +4,9 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "systems/limits.hpp"
+
+#include <glm/vec3.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -24,9 +27,6 @@ struct SurfaceDef {
     bool spills = true;                 ///< false for the ground: its edges keep their snow
     float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), seed 002 §3
 };
-
-/// Largest grid a surface may have (cells per side); larger is an input error.
-inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
 /// so redistribution works where snow changed, whatever the surface's size.
@@ -144,7 +144,12 @@ struct SurfaceOf {
 struct SnowHolder {};
 
 /// Builds a surface from a definition; returns an error naming the bad field
-/// in `error` (and an empty surface) for invalid values.
+/// in `error` (and an empty surface) for invalid values. Its grid has at most
+/// max_surface_cells_per_side cells per side (limits.hpp).
 [[nodiscard]] SnowSurface make_surface(const SurfaceDef& def, std::string& error);
+
+/// Corners of a surface's bare top as the plane through its corner cells (what
+/// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1). False for an empty surface.
+[[nodiscard]] bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]);
 
 } // namespace snow

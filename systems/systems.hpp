@@ -18,7 +18,7 @@ void redistribute_system(World& w); ///< redistribute.cpp: Laplacian cap (seed 0
 void spill_system(World& w);        ///< spill.cpp: edge overflow to lower surfaces
 void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map (seed 004)
 
-/// Per-run counters the systems add to (World resource; not part of the state hash).
+/// Per-run counters the systems add to (World resource; tick state, so saved and hashed).
 struct SimCounters {
     std::uint64_t stiff_flake_ticks = 0; ///< flake-ticks where explicit Euler was unsafe
     std::uint64_t landed = 0;            ///< flakes that became snow

@@ -37,7 +37,8 @@ SurfaceDef flat(float x0, float z0, float size, float cell, float y = 0.0f) {
     return d;
 }
 
-/// Adds an airborne flake (and its mass to the ledger); returns its slot.
+/// Adds an airborne flake (and its mass to the ledger) as if it had moved at
+/// v this tick (its path started at p − v·dt); returns its slot.
 std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units) {
     FlakePool& f = sim.world().resource<FlakePool>();
     std::uint32_t slot = 0;
@@ -45,6 +46,10 @@ std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32
     f.px[slot] = p.x;
     f.py[slot] = p.y;
     f.pz[slot] = p.z;
+    const float dt = sim.config().dt;
+    f.start_x[slot] = p.x - v.x * dt;
+    f.start_y[slot] = p.y - v.y * dt;
+    f.start_z[slot] = p.z - v.z * dt;
     f.vx[slot] = v.x;
     f.vy[slot] = v.y;
     f.vz[slot] = v.z;

@@ -122,30 +122,10 @@ void overload_edges(Simulation& sim) {
     });
 }
 
-/// The yard with everything switched on: emitter, walking and gusting wind,
-/// a mesh roof over the snowman seen through a tilted sky camera, and a
-/// garage roof whose edge is over its limit (so it spills at once).
+/// The stormy yard (every system does real work, the sky map refreshes as
+/// the wind turns) with its roof edges over their limit, so it spills at once.
 std::unique_ptr<Simulation> busy_scene(unsigned threads) {
-    YardOptions o;
-    o.threads = threads;
-    o.max_flakes = 60000;
-    o.prefill = 40000; // more than two chunks of flake_grain: both threads work
-    o.emitter_rate = 6000.0f;
-    auto sim = make_yard(o);
-    Wind wind;
-    wind.base = wind.current = {2.0f, 0.0f, 0.5f};
-    wind.walk = 1.0f;
-    wind.max_deviation = 1.5f;
-    wind.gust_strength = 2.0f;
-    wind.gust_rate = 0.5f;
-    sim->set_wind(wind);
-    const glm::vec3 a{-6.0f, 2.0f, 1.0f}, b{-2.0f, 2.0f, 1.0f}, c{-2.0f, 2.5f, 5.0f},
-        d{-6.0f, 2.5f, 5.0f};
-    sim->add_mesh_collider({a, b, c, a, c, d});
-    OcclusionCamera cam;
-    cam.resolution = 128;
-    cam.tilt = 0.4f; // the map leans with the wind: refreshes as it turns
-    sim->set_occlusion(cam);
+    auto sim = make_stormy_yard(threads);
     overload_edges(*sim);
     return sim;
 }
