@@ -157,10 +157,9 @@ void reach(const World& w, ColliderGrid& g) {
                   std::max({a.z, b.z, c.z}), std::max({a.y, b.y, c.y}));
         }
         for (std::uint32_t i = m.surf_begin; i < m.surf_end; ++i) {
-            glm::vec3 q[4];
-            if (surface_base_corners(w.get<SnowSurface>(g.holder_surfaces[i]), q)) {
-                raise(q[0].x, q[2].x, q[0].z, q[2].z, std::max({q[0].y, q[1].y, q[2].y, q[3].y}));
-            }
+            const std::array<glm::vec3, 4> q =
+                surface_base_corners(w.get<SnowSurface>(g.holder_surfaces[i]));
+            raise(q[0].x, q[2].x, q[0].z, q[2].z, std::max({q[0].y, q[1].y, q[2].y, q[3].y}));
         }
     }
     dilate(g, mesh, g.cell_mesh_reach);

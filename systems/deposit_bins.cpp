@@ -68,9 +68,7 @@ void rebuild(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
     // Bare tops are fixed when a surface is made; only snow changes after.
     d.min_bare.clear();
     for (const SnowSurface& s : surfaces) {
-        const std::int64_t lowest =
-            s.base_level.empty() ? 0 : *std::min_element(s.base_level.begin(), s.base_level.end());
-        d.min_bare.push_back(s.height(lowest));
+        d.min_bare.push_back(s.height(*std::min_element(s.base_level.begin(), s.base_level.end())));
     }
 }
 
@@ -122,8 +120,8 @@ void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surf
 }
 
 void flag_deposit_candidates(const DepositBins& bins, const float* __restrict px,
-                             const float* __restrict py, const float* __restrict pz,
-                             std::size_t n, std::uint8_t* __restrict flags) {
+                             const float* __restrict py, const float* __restrict pz, std::size_t n,
+                             std::uint8_t* __restrict flags) {
     const BinGrid g = bins.grid; // a local copy: the flag stores cannot alias it
     const float* __restrict bin_top = bins.bin_top.data();
     for (std::size_t j = 0; j < n; ++j) {

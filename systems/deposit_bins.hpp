@@ -84,7 +84,7 @@ void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surf
 /// not above its top (it may land), else 0; j in [0, n). Free slots (py =
 /// FlakePool::parked_y) are never flagged. Branch-free: it vectorises.
 void flag_deposit_candidates(const DepositBins& bins, const float* __restrict px,
-                             const float* __restrict py, const float* __restrict pz,
-                             std::size_t n, std::uint8_t* __restrict flags);
+                             const float* __restrict py, const float* __restrict pz, std::size_t n,
+                             std::uint8_t* __restrict flags);
 
 } // namespace snow

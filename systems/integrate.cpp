@@ -129,8 +129,8 @@ struct IntegratePass {
 
 std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
     const Lanes& a = p.lanes;
-    const Lanes l{a.sx + b, a.sy + b, a.sz + b, a.px + b,  a.py + b,
-                  a.pz + b, a.vx + b, a.vy + b, a.vz + b, a.kom + b, a.mass + b};
+    const Lanes l{a.sx + b, a.sy + b, a.sz + b, a.px + b,  a.py + b,  a.pz + b,
+                  a.vx + b, a.vy + b, a.vz + b, a.kom + b, a.mass + b};
     const std::size_t n = e - b;
     // Rules without a stability limit get an infinite one.
     constexpr float none = 3.0e38f;

@@ -12,8 +12,7 @@ namespace snow {
 namespace {
 
 /// Texels whose centres (i + 0.5) lie in [lo, hi], clamped to [0, n); false if none.
-bool texel_range(double lo, double hi, std::uint32_t n, std::uint32_t& first,
-                 std::uint32_t& last) {
+bool texel_range(double lo, double hi, std::uint32_t n, std::uint32_t& first, std::uint32_t& last) {
     const double a = std::max(std::ceil(lo - 0.5), 0.0);
     const double b = std::min(std::floor(hi - 0.5), static_cast<double>(n) - 1.0);
     if (!(a <= b)) {
@@ -118,11 +117,9 @@ void Rasteriser::sphere(const glm::vec3& c, float r, std::uint32_t id) {
 }
 
 void Rasteriser::surface(const SnowSurface& s, std::uint32_t id) {
-    glm::vec3 q[4];
-    if (surface_base_corners(s, q)) {
-        triangle(q[0], q[1], q[2], id);
-        triangle(q[0], q[2], q[3], id);
-    }
+    const std::array<glm::vec3, 4> q = surface_base_corners(s);
+    triangle(q[0], q[1], q[2], id);
+    triangle(q[0], q[2], q[3], id);
 }
 
 void rasterise_scene(const World& w, OcclusionMap& m) {

@@ -100,7 +100,8 @@ class Simulation {
   private:
     void build_schedule();
 
-    /// state_hash()'s digest of the sources, recomputed when their versions change.
+    /// state_hash()'s digest of the sources, recomputed when their versions
+    /// change (so state_hash() must not run on two threads at once).
     struct SourceDigest {
         bool valid = false;
         SourceVersions of;

@@ -25,7 +25,7 @@ struct Snapshot {
     SimClock clock;
     MassLedger ledger;
     SimCounters counters;
-    std::optional<Wind> wind;          ///< its walk, gust and settings
+    std::optional<Wind> wind;            ///< its walk, gust and settings
     std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
     /// Snow and pending smoothing of every surface, by entity.
     std::vector<std::pair<Entity, SnowSurface>> surfaces;

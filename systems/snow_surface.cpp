@@ -94,10 +94,7 @@ SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
     return s;
 }
 
-bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]) {
-    if (s.nx == 0 || s.nz == 0 || s.base_level.size() < static_cast<std::size_t>(s.nx) * s.nz) {
-        return false;
-    }
+std::array<glm::vec3, 4> surface_base_corners(const SnowSurface& s) {
     // Plane through the corner cells' centres, extended to the grid's edges.
     const auto base = [&](std::uint32_t ix, std::uint32_t iz) {
         return static_cast<double>(s.base_level[s.index(ix, iz)]) * s.unit_height;
@@ -111,11 +108,7 @@ bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]) {
         const double y = h00 + (x - x0 - 0.5 * cell) * gx + (z - z0 - 0.5 * cell) * gz;
         return glm::vec3{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
     };
-    corners[0] = at(x0, z0);
-    corners[1] = at(x1, z0);
-    corners[2] = at(x1, z1);
-    corners[3] = at(x0, z1);
-    return true;
+    return {at(x0, z0), at(x1, z0), at(x1, z1), at(x0, z1)};
 }
 
 bool SnowSurface::cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const {

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -149,7 +150,7 @@ struct SnowHolder {};
 [[nodiscard]] SnowSurface make_surface(const SurfaceDef& def, std::string& error);
 
 /// Corners of a surface's bare top as the plane through its corner cells (what
-/// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1). False for an empty surface.
-[[nodiscard]] bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]);
+/// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1).
+[[nodiscard]] std::array<glm::vec3, 4> surface_base_corners(const SnowSurface& s);
 
 } // namespace snow

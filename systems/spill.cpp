@@ -78,7 +78,7 @@ void spill_system(World& w) {
     const float k_over_m = g / fall;
 
     for (SnowSurface& s : w.pool<SnowSurface>().components()) {
-        if (!s.spills || s.nx == 0 || s.nz == 0) {
+        if (!s.spills) {
             continue;
         }
         const std::uint32_t limit = s.edge_limit_units;

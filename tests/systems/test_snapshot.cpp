@@ -113,10 +113,8 @@ OcclusionMap& sky_map(Simulation& s) {
 std::vector<Change> changes() {
     std::vector<Change> c;
     const auto slot_change = [&c](const std::string& name, PoolArray<float> FlakePool::*array) {
-        c.push_back({"flake " + name, [array](Simulation& s) {
-                         (pool(s).*array)[alive_slot(s)] += 0.25f;
-                     },
-                     true});
+        c.push_back({"flake " + name,
+                     [array](Simulation& s) { (pool(s).*array)[alive_slot(s)] += 0.25f; }, true});
     };
     slot_change("px", &FlakePool::px);
     slot_change("py", &FlakePool::py);
@@ -162,8 +160,8 @@ std::vector<Change> changes() {
                  [](Simulation& s) { s.world().resource<Wind>().current.x += 0.5f; }, true});
     c.push_back({"wind walk offset",
                  [](Simulation& s) { s.world().resource<Wind>().deviation.z += 0.5f; }, true});
-    c.push_back({"gust left", [](Simulation& s) { s.world().resource<Wind>().gust_left += 0.5f; },
-                 true});
+    c.push_back(
+        {"gust left", [](Simulation& s) { s.world().resource<Wind>().gust_left += 0.5f; }, true});
     c.push_back({"wind settings",
                  [](Simulation& s) {
                      Wind w = s.world().resource<Wind>();
@@ -173,33 +171,35 @@ std::vector<Change> changes() {
                  true});
     c.push_back({"no wind", [](Simulation& s) { s.clear_wind(); }, true});
     c.push_back({"snow in a cell", [](Simulation& s) { ++ground(s).snow[5]; }, true});
-    c.push_back({"cells waiting for smoothing", [](Simulation& s) { ground(s).mark_dirty(1, 1); },
-                 true});
+    c.push_back(
+        {"cells waiting for smoothing", [](Simulation& s) { ground(s).mark_dirty(1, 1); }, true});
     c.push_back({"level bound", [](Simulation& s) { ++ground(s).level_bound; }, true});
     c.push_back({"sky map lean", [](Simulation& s) { sky_map(s).wind_angle += 0.1f; }, true});
     c.push_back({"sky map never built", [](Simulation& s) { sky_map(s) = OcclusionMap{}; }, true});
-    c.push_back({"sky map gone stale", [](Simulation& s) { --sky_map(s).built_from.solids; },
-                 true});
+    c.push_back(
+        {"sky map gone stale", [](Simulation& s) { --sky_map(s).built_from.solids; }, true});
     c.push_back({"integrator", [](Simulation& s) { s.set_integrator(Integrator::rk4); }, false});
     c.push_back({"emitter settings",
-                 [](Simulation& s) {
-                     s.world().pool<Emitter>().components().front().rate += 1.0f;
-                 },
+                 [](Simulation& s) { s.world().pool<Emitter>().components().front().rate += 1.0f; },
                  false});
     c.push_back({"another emitter", [](Simulation& s) { s.add_emitter(Emitter{}); }, false});
     c.push_back({"occlusion camera",
-                 [](Simulation& s) { s.set_occlusion(OcclusionCamera{97, 0.5f}); }, false});
+                 [](Simulation& s) {
+                     s.set_occlusion(OcclusionCamera{97, 0.5f});
+                 },
+                 false});
     c.push_back({"a box", [](Simulation& s) { s.add_box({{5, 0, 5}, {6, 1, 6}}); }, false});
     c.push_back({"a sphere", [](Simulation& s) { s.add_sphere({5, 1, -5}, 0.5f); }, false});
     c.push_back({"a mesh",
-                 [](Simulation& s) { s.add_mesh_collider({{0, 3, 0}, {1, 3, 0}, {0, 3, 1}}); },
-                 false});
-    c.push_back({"a surface", [](Simulation& s) { s.add_surface(SurfaceDef{}); }, false});
-    c.push_back({"removing a solid",
                  [](Simulation& s) {
-                     s.remove(s.world().pool<SphereCollider>().entities().front());
+                     s.add_mesh_collider({{0, 3, 0}, {1, 3, 0}, {0, 3, 1}});
                  },
                  false});
+    c.push_back({"a surface", [](Simulation& s) { s.add_surface(SurfaceDef{}); }, false});
+    c.push_back(
+        {"removing a solid",
+         [](Simulation& s) { s.remove(s.world().pool<SphereCollider>().entities().front()); },
+         false});
     return c;
 }
 
