@@ -15,6 +15,7 @@ constexpr const char* smoke_filter = "--benchmark_filter="
                                      "|/side:256/patch:8(/|$)"
                                      "|/side:256/landings:256(/|$)"
                                      "|/side:32(/|$)"
+                                     "|/side:256/threads:1(/|$)"
                                      "|/resolution:256(/|$)"
                                      "|/mib:64/.*threads:1$";
 

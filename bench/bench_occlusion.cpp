@@ -1,4 +1,4 @@
-// Occlusion refresh (seed 004 sky map, issue #8): the cost of one full
+// Occlusion refresh ([SKY] sky map, issue #8): the cost of one full
 // rebuild, which the occlusion system does only when geometry or the wind's
 // lean changed. The yard plus a bumpy roof mesh of 2·32² triangles.
 #include "bench_scene.hpp"

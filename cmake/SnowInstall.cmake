@@ -34,7 +34,7 @@ if(TARGET snow_render)
 endif()
 # snow::scene's one public header (the scene_*.hpp beside it are internals).
 if(TARGET snow_scene)
-    install(FILES game/scene_loader.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/game)
+    install(FILES game/scene/scene_loader.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/game/scene)
 endif()
 # The public facade: #include <snow/snow.hpp>
 install(FILES systems/snow.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)

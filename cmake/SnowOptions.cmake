@@ -1,5 +1,5 @@
 # Project-wide compile settings, applied per target with snow_set_options().
-# Determinism (DESIGN.md): never -ffast-math; -ffp-contract=off so no FMA fusion
+# Determinism (docs/design.md "Determinism"): never -ffast-math; -ffp-contract=off so no FMA fusion
 # changes results between scalar/SIMD or Debug/Release builds.
 function(snow_set_options target)
     target_compile_options(${target} PRIVATE
@@ -13,6 +13,15 @@ function(snow_set_options target)
                                                  -fno-sanitize-recover=all)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
+endfunction()
+
+# flake_pool.hpp's allocator calls the sized aligned ::operator delete, which
+# Clang 14 declares only under -fsized-deallocation (GCC: on from C++14). The
+# header is public, so the flag is a usage requirement: PUBLIC, and exported
+# with the installed target, evaluated for the consumer's compiler.
+function(snow_require_sized_deallocation target)
+    target_compile_options(${target} PUBLIC
+        $<$<COMPILE_LANG_AND_ID:CXX,Clang,AppleClang>:-fsized-deallocation>)
 endfunction()
 
 # Generates ${out} (a .cpp) defining snow::${symbol}() returning ${input}'s bytes.

@@ -18,33 +18,20 @@ namespace snow {
     return x;
 }
 
-/// Named streams keep draws of different purposes apart.
-enum class Stream : std::uint32_t {
-    spawn_activate = 1,
-    spawn_position,
-    spawn_mass,
-    spawn_size,
-    spawn_velocity,
-    wind_walk,
-    wind_gust,
-    roll,
-    spill,
-    test = 1000,
-};
-
+/// A draw's key. `stream` keeps draws of different purposes apart; ecs/ gives
+/// the ids no meaning, the caller names its own.
 struct RngKey {
     std::uint64_t seed = 0;
     std::uint64_t tick = 0;
     std::uint32_t slot = 0;
-    Stream stream = Stream::test;
+    std::uint32_t stream = 0;
 };
 
 /// 64 random bits for key + draw index `n` (several draws under one key).
 [[nodiscard]] constexpr std::uint64_t rng_bits(const RngKey& k, std::uint32_t n = 0) {
     std::uint64_t h = mix64(k.seed ^ 0x9E3779B97F4A7C15ull);
     h = mix64(h ^ k.tick);
-    h = mix64(h ^
-              ((static_cast<std::uint64_t>(k.slot) << 32) | static_cast<std::uint32_t>(k.stream)));
+    h = mix64(h ^ ((static_cast<std::uint64_t>(k.slot) << 32) | k.stream));
     return mix64(h + n);
 }
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "game/game_input.hpp"
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <cstdint>
 #include <optional>

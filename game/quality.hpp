@@ -4,7 +4,7 @@
 /// level of detail (not part of that study).
 #pragma once
 
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 #include "render/render_settings.hpp"
 
 #include <array>

@@ -3,7 +3,7 @@
 #include "game/builtin_scene.hpp"
 #include "game/cli_args.hpp"
 #include "game/run_report.hpp"
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <chrono>
 #include <cstdio>

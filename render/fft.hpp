@@ -1,7 +1,7 @@
 /// @file fft.hpp
 /// @brief A radix-2 complex FFT of our own, in 1-D and composed into 3-D, for
-/// the far-field snow volume (seed 000). Debian's kissfft failed on the 3-D
-/// real plan and FFTW's GPL does not fit (TOOLCHAIN.md). CPU only, no GL.
+/// the far-field snow volume [LZ]. Debian's kissfft failed on the 3-D
+/// real plan and FFTW's GPL does not fit (docs/toolchain.md "FFT"). CPU only, no GL.
 #pragma once
 
 #include <complex>

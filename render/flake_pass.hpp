@@ -1,5 +1,5 @@
 /// @file flake_pass.hpp
-/// @brief Falling flakes as GL_POINTS sprites (seed 003), uploaded from the
+/// @brief Falling flakes as GL_POINTS sprites [ZCL], uploaded from the
 /// FlakePool with one buffer upload per frame: alive, visible flakes are
 /// compacted on the CPU into a preallocated staging array.
 #pragma once

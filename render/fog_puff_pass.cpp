@@ -63,7 +63,7 @@ void FogPuffPass::run(const World& world, FrameContext& frame) {
     program.use();
     glUniform1i(program.uniform("scene_depth"), scene_depth_unit);
     set_puff_uniforms(program, fog.puffs);
-    // src alpha = 1 − 0.5^depth: colour = mix(fog colour, colour, 0.5^depth) (seed 001).
+    // src alpha = 1 − 0.5^depth: colour = mix(fog colour, colour, 0.5^depth) [PE].
     glDisable(GL_DEPTH_TEST);
     draw_fullscreen_blended(vao_);
     glEnable(GL_DEPTH_TEST);

@@ -1,5 +1,5 @@
 /// @file fog_puff_pass.hpp
-/// @brief The fog-puff pass (seed 001): after the flakes, every pixel is
+/// @brief The fog-puff pass [PE]: after the flakes, every pixel is
 /// fogged by the puffs between the eye and the opaque surface behind it,
 /// colour = mix(fog colour, colour, 0.5^(optical depth)), the optical depth
 /// in closed form (fog_puffs.hpp). Runs only for a Fog with puffs.

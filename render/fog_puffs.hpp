@@ -1,5 +1,5 @@
 /// @file fog_puffs.hpp
-/// @brief Fog puffs of seed 001 (Perlin): Gaussian and Gabor density blobs
+/// @brief Fog puffs of [PE] (Perlin): Gaussian and Gabor density blobs
 /// whose line integrals have closed forms, so the optical depth of any ray
 /// costs a few erf evaluations instead of a ray march. CPU reference (double)
 /// of what assets/shaders/fog_puffs.frag computes per pixel, and a probe that
@@ -28,7 +28,7 @@ inline constexpr std::size_t max_drawn_puffs = 32;
 
 /// ∫ puff_density along the segment a→b, in closed form: a line through a
 /// Gaussian is a 1-D Gaussian (erf), through a Gabor a 1-D Gabor (complex erf)
-/// (seed 001). 0 for a = b or a puff with σ ≤ 0.
+/// [PE]. 0 for a = b or a puff with σ ≤ 0.
 [[nodiscard]] double puff_optical_depth(const FogPuff& puff, const glm::dvec3& a,
                                         const glm::dvec3& b);
 

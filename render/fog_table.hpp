@@ -1,5 +1,5 @@
 /// @file fog_table.hpp
-/// @brief Layered fog (seed 001): density varies with height only, so the
+/// @brief Layered fog [PE]: density varies with height only, so the
 /// optical depth of any ray is (E(yB) − E(yA)) / cos θ with E a precomputed
 /// 1-D table of the density's integral.
 #pragma once

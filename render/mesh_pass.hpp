@@ -1,6 +1,6 @@
 /// @file mesh_pass.hpp
 /// @brief Scene meshes (MeshRenderable), lit by the point lights and ambient,
-/// whitened by snow where they face the sky unoccluded (seed 004).
+/// whitened by snow where they face the sky unoccluded [SKY].
 #pragma once
 
 #include "render/gl_objects.hpp"

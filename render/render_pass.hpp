@@ -36,8 +36,8 @@ struct FrameContext {
 };
 
 /// Interface of a pass. Built-in order (Renderer::pass_names()):
-/// "sky" → "snow_surfaces" → "meshes" → "flakes"; far-field snow (seed 000) goes
-/// before "flakes" and fog puffs (seed 001) after it, via Renderer::insert_pass.
+/// "sky" → "snow_surfaces" → "meshes" → "flakes"; far-field snow [LZ] goes
+/// before "flakes" and fog puffs [PE] after it, via Renderer::insert_pass.
 class RenderPass {
   public:
     virtual ~RenderPass() = default;

@@ -19,7 +19,7 @@ enum class FlakeLod : std::uint8_t {
 
 struct RenderSettings {
     glm::vec3 snow_color{0.94f, 0.96f, 1.0f};
-    /// How white exposed, sky-facing meshes get, 0..1 (seed 004 snow blend).
+    /// How white exposed, sky-facing meshes get, 0..1 ([SKY] snow blend).
     float mesh_snow = 1.0f;
     /// A fragment counts as seen from the sky if y >= occlusion top_y − this (m).
     float exposure_tolerance = occlusion_tolerance;
@@ -33,7 +33,7 @@ struct RenderSettings {
     float flake_min_px = 1.5f; ///< smaller sprites are enlarged and made fainter
     float flake_max_px = 48.0f;
     float flake_alpha = 0.9f;
-    /// Flake alpha is multiplied by e^(−d / fade): far flakes are fainter (seed 004).
+    /// Flake alpha is multiplied by e^(−d / fade): far flakes are fainter [SKY].
     float flake_fade_distance = 40.0f;
     FlakeLod flake_lod = FlakeLod::automatic;
     /// Beyond this distance (m) only a fraction (lod_distance / d)² of flakes is drawn.

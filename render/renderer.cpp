@@ -173,7 +173,7 @@ void Renderer::Impl::add_effect_passes(const World& world) {
     // Draw only what the scene calls for: an effect's pass (and its FFT volume or
     // shader) exists from the first frame whose world declares the effect.
     if (world.has_resource<SpectralSnow>() && !has_pass(SpectralPass::pass_name)) {
-        // Behind the particle flakes (seed 000 composites over the background).
+        // Behind the particle flakes ([LZ] composites over the background).
         const auto flakes = std::find_if(passes.begin(), passes.end(),
                                          [](const auto& p) { return p->name() == "flakes"; });
         passes.insert(flakes, std::make_unique<SpectralPass>());

@@ -20,11 +20,11 @@ namespace snow {
 
 /// Create, use and destroy it with `context` current. Passes, in order:
 ///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
-///   "snow_surfaces" SnowSurface heightfields + aprons (seed 002 §6)
-///   "meshes"        MeshRenderable, lit, snow-white where exposed (seed 004)
-///   [far-field spectral snow, seed 000: insert_pass("flakes", ...)]
-///   "flakes"        FlakePool point sprites (seed 003/004)
-///   [fog puffs, seed 001: insert_pass("", ...) appends after "flakes"]
+///   "snow_surfaces" SnowSurface heightfields + aprons [WF §6]
+///   "meshes"        MeshRenderable, lit, snow-white where exposed [SKY]
+///   (far-field spectral snow [LZ]: insert_pass("flakes", ...))
+///   "flakes"        FlakePool point sprites ([ZCL], [SKY])
+///   (fog puffs [PE]: insert_pass("", ...) appends after "flakes")
 class Renderer {
   public:
     /// Throws RenderError if the context lacks what the renderer needs.

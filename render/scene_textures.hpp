@@ -1,6 +1,6 @@
 /// @file scene_textures.hpp
 /// @brief Textures every pass may sample, re-uploaded only when their source
-/// changes: the sky occlusion map (seed 004) and the layered-fog table (seed 001).
+/// changes: the sky occlusion map [SKY] and the layered-fog table [PE].
 #pragma once
 
 #include "render/gl_objects.hpp"

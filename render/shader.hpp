@@ -55,8 +55,8 @@ class ProgramCache {
 
 /// Fixed texture units shared by all programs.
 namespace texture_unit {
-inline constexpr int occlusion = 0; ///< sampler2D occlusion_map: sky top_y (seed 004)
-inline constexpr int fog_table = 1; ///< sampler1D fog_table: layered fog E(y) (seed 001)
+inline constexpr int occlusion = 0; ///< sampler2D occlusion_map: sky top_y [SKY]
+inline constexpr int fog_table = 1; ///< sampler1D fog_table: layered fog E(y) [PE]
 } // namespace texture_unit
 
 /// Binding point of the "Frame" uniform block.

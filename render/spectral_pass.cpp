@@ -97,7 +97,7 @@ void SpectralPass::build(const SpectralSnow& s, std::uint64_t seed) {
     }
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(spectral_volume_unit));
     glBindTexture(GL_TEXTURE_3D, volume_.id());
-    // Repeat on all three axes: seed 000 tiles the volume and loops it.
+    // Repeat on all three axes: [LZ] tiles the volume and loops it.
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_REPEAT);

@@ -1,5 +1,5 @@
 /// @file spectral_pass.hpp
-/// @brief Far-field snow (seed 000): the periodic opacity volume α(x, y, t)
+/// @brief Far-field snow [LZ]: the periodic opacity volume α(x, y, t)
 /// uploaded once as a 3-D texture and composited over the scene behind the
 /// particle flakes, I = I_snow·α + (1 − α)·I_background, tiled over view
 /// directions and looped in time. Runs only with a SpectralSnow resource.

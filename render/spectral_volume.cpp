@@ -1,6 +1,7 @@
 #include "render/spectral_volume.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 #include <glm/trigonometric.hpp>
 
@@ -12,10 +13,6 @@
 namespace snow {
 
 namespace {
-
-/// Draws of the spectral volume: render-only, apart from every simulation
-/// stream of ecs/rng.hpp (which has no named entry for it yet).
-constexpr Stream spectral_stream = static_cast<Stream>(2000);
 
 /// Position of frequency k (possibly negative) along an axis of n samples.
 std::size_t wrap(int k, std::uint32_t n) {
@@ -53,16 +50,16 @@ std::vector<Complex> spectral_spectrum(const SpectralSnow& s, std::uint64_t seed
             }
             const double k = std::hypot(static_cast<double>(kx), static_cast<double>(ky));
             if (k < s.band_low || k > s.band_high) {
-                continue; // seed 000: small flakes only, far from the Nyquist limit
+                continue; // [LZ]: small flakes only, far from the Nyquist limit
             }
             const RngKey key{
                 seed, 0,
                 static_cast<std::uint32_t>((ky + half) * static_cast<int>(n) + (kx + half)),
-                spectral_stream};
+                random_stream::spectral_volume};
             const double phase = 2.0 * std::numbers::pi * rng_uniform(key, 0);
             const double c = c_max * (1.0 - spectral_speed_spread * rng_uniform(key, 1));
             const int kt = spectral_temporal_frequency(kx, ky, c);
-            // Power ∝ 1/|ω|: equal power per octave (seed 000, after Field 1987).
+            // Power ∝ 1/|ω|: equal power per octave ([LZ], after Field 1987).
             const Complex value = std::polar(1.0 / std::sqrt(k), phase);
             at(kx, ky, kt) = value;
             at(-kx, -ky, -kt) = std::conj(value); // Bracewell's conjugacy: a real volume
@@ -89,7 +86,7 @@ SpectralVolume build_spectral_volume(const SpectralSnow& s, std::uint64_t seed) 
     }
     v.imaginary_ratio = max_real > 0.0 ? max_imag / max_real : 0.0;
     v.alpha.resize(data.size());
-    // Seed 000: rescale I(x, y, t) to [0, 1] and use it as the opacity α.
+    // [LZ]: rescale I(x, y, t) to [0, 1] and use it as the opacity α.
     const double range = hi - lo;
     for (std::size_t i = 0; i < data.size(); ++i) {
         v.alpha[i] = range > 0.0 ? static_cast<float>((data[i].real() - lo) / range) : 0.0f;

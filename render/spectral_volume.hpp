@@ -1,5 +1,5 @@
 /// @file spectral_volume.hpp
-/// @brief The far-field snow opacity volume α(x, y, t) of seed 000 (Langer &
+/// @brief The far-field snow opacity volume α(x, y, t) of [LZ] (Langer &
 /// Zhang): random-phase spectrum on the dispersion surface ω_t = c·ω_y/|ω|,
 /// power ∝ 1/|ω| in a band, inverse 3-D FFT, rescaled to [0, 1]. Periodic in
 /// x, y and t, so it tiles and loops. CPU only, deterministic, no GL.
@@ -13,7 +13,7 @@
 
 namespace snow {
 
-/// Seed 000 uses "a small range of constants c": each spatial frequency draws
+/// [LZ] uses "a small range of constants c": each spatial frequency draws
 /// its c from spectral_c_max · [1 − spread, 1].
 inline constexpr double spectral_speed_spread = 0.25;
 
@@ -22,7 +22,7 @@ inline constexpr double spectral_speed_spread = 0.25;
 [[nodiscard]] double spectral_c_max(const SpectralSnow& s);
 
 /// Temporal frequency (cycles per loop) of spatial frequency (kx, ky) (cycles
-/// per tile, not both 0) for constant c: round(c·ky/|k|), seed 000 Eq. (1) with
+/// per tile, not both 0) for constant c: round(c·ky/|k|), [LZ eq. 1] with
 /// y pointing up, so every component moves down. Odd in (kx, ky).
 [[nodiscard]] int spectral_temporal_frequency(int kx, int ky, double c);
 
@@ -43,7 +43,7 @@ struct SpectralVolume {
     double imaginary_ratio = 0.0;
 };
 
-/// Inverse 3-D FFT of spectral_spectrum, real part rescaled to [0, 1] (seed 000).
+/// Inverse 3-D FFT of spectral_spectrum, real part rescaled to [0, 1] [LZ].
 /// A band that holds no integer frequency gives α = 0 everywhere (no snow).
 /// Expects validate(s) to be empty; throws std::invalid_argument for sizes
 /// that are not powers of two.
@@ -57,7 +57,7 @@ struct SpectralMapping {
     /// Seconds of one period of the volume's t axis. speed 1 makes the lowest
     /// band (the nearest snow) fall at the angular speed of a particle flake
     /// falling at `fall_speed` at start_distance; higher bands are farther and
-    /// slower (seed 000: ω_t = c·ω_y/|ω|).
+    /// slower ([LZ]: ω_t = c·ω_y/|ω|).
     double loop_seconds = 1.0;
 };
 

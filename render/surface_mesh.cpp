@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <span>
 
 namespace snow {
 
@@ -27,10 +28,16 @@ CornerSample corner_sample(const SnowSurface& s, std::uint32_t ix, std::uint32_t
     for (std::uint32_t cz = (iz > 0 ? iz - 1 : 0); cz <= std::min(iz, s.nz - 1); ++cz) {
         for (std::uint32_t cx = (ix > 0 ? ix - 1 : 0); cx <= std::min(ix, s.nx - 1); ++cx) {
             const std::size_t i = s.index(cx, cz);
+            if (s.is_void(i)) {
+                continue; // a cover's cell with no geometry: no snow, not drawn
+            }
             top += s.top_y(i);
             base += base_y(s, i);
             ++n;
         }
+    }
+    if (n == 0) {
+        return {};
     }
     return {top / static_cast<float>(n), base / static_cast<float>(n)};
 }
@@ -93,13 +100,17 @@ void build_surface_mesh(const SnowSurface& s, std::vector<float>& vertices,
         indices->reserve(static_cast<std::size_t>(s.nx) * s.nz * 6u + 12u * (s.nx + s.nz));
         for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
             for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+                if (s.is_void(s.index(ix, iz))) {
+                    continue;
+                }
                 const std::uint32_t a = corner(ix, iz), b = corner(ix + 1, iz),
                                     c = corner(ix, iz + 1), d = corner(ix + 1, iz + 1);
                 indices->insert(indices->end(), {a, c, b, b, c, d}); // counter-clockwise from +y
             }
         }
     }
-    for (const Edge& e : edges) {
+    // A cover's border cuts through geometry or void: no apron there.
+    for (const Edge& e : s.closed.empty() ? std::span<const Edge>(edges) : std::span<const Edge>()) {
         const std::uint32_t first = next;
         for (std::uint32_t k = 0; k <= e.length; ++k) {
             const std::uint32_t ix = e.x0 + k * e.dx, iz = e.z0 + k * e.dz;
@@ -137,6 +148,7 @@ std::uint64_t surface_fingerprint(const SnowSurface& s) {
     mix(std::bit_cast<std::uint32_t>(s.cell));
     mix(std::bit_cast<std::uint32_t>(s.unit_height));
     mix(s.base_level.size());
+    mix(s.base_version); // a cover's base follows its geometry
     const std::size_t n = s.snow.size();
     std::size_t i = 0;
     for (; i + 1 < n; i += 2) {

@@ -1,7 +1,7 @@
 /// @file surface_mesh.hpp
 /// @brief A SnowSurface as a triangle mesh: heightfield over the cell corners
 /// with normals from the depth field, plus an apron down to the bare top
-/// (seed 002 §6). CPU only.
+/// [WF §6]. CPU only.
 #pragma once
 
 #include "systems/snow_surface.hpp"

@@ -5,9 +5,10 @@ set -euo pipefail
 
 packages=(
     g++ cmake ninja-build pkg-config python3
+    clang                                        # CI's second compiler (build-clang)
     libglm-dev                                   # snow_sim (the only dependency of the simulation)
     libglfw3-dev libosmesa6-dev libegl-dev libegl-mesa0 libstb-dev python3-glad libimgui-dev  # snow_render, snow_game
-    libtinygltf-dev nlohmann-json3-dev           # snow_scene
+    nlohmann-json3-dev                           # snow_scene
     googletest libgtest-dev libbenchmark-dev     # snow_tests, snow_bench
     xvfb xauth                                   # window tests without a display
     gnuplot-nox                                  # plots in docs/

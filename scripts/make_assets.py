@@ -6,17 +6,22 @@
 Standard library only. Output is deterministic: running it again rewrites
 the same bytes (--check exits 1 if a file would change). Scenes:
 
-  village.gltf          seed 002's test scene: ground, a house with a pitched
+  village.gltf          the test scene of [WF §5]: ground, a house with a pitched
                         roof (two sloped mesh colliders with sloped surfaces),
                         a porch roof under its lee eave, a flat-roofed garage,
                         a fence, a three-sphere snowman, three coloured point
                         lights (white above the house, blue nearer the camera,
-                        yellow on the right; seed 002 section 5), steady wind
-                        along +x, exponential fog, an occlusion camera.
+                        yellow on the right), steady wind along +x,
+                        exponential fog, an occlusion camera, a snow cover
+                        for the snowman and the fence, and a walker doing
+                        laps round the snowman.
   village_effects.gltf  the village plus the spectral far-field layer, gusts
                         and layered fog with a puff.
   minimal.gltf          ground and an emitter only: no wind, fog, occlusion or
                         spectral layer, default bounds.
+  park.gltf             no declared surfaces at all: hilly terrain (a mesh), a
+                        statue of spheres and boxes on a plinth, three benches,
+                        five cone trees, and a snow cover over everything.
 """
 
 import base64
@@ -262,6 +267,13 @@ def village(effects):
                     translation=[0.0, y, 0.0], scale=[r, r, r], snow={"collider": "sphere"})
              for part, y, r in (("base", 0.6, 0.6), ("body", 1.5, 0.42), ("head", 2.12, 0.28))]
     snowman = g.node("snowman", translation=[2.0, 0.0, 4.0], children=balls)
+    # A walker (an upright capsule) doing laps round the snowman: its trail
+    # is carved through the ground's snow and filled again by the snowfall.
+    lap = [[-1.0, 0.9, 2.5], [5.0, 0.9, 2.5], [5.0, 0.9, 6.5], [-1.0, 0.9, 6.5]]
+    walker = g.node("walker", g.mesh("walker", box, m_wood), translation=lap[0],
+                    scale=[0.4, 1.8, 0.4],
+                    snow={"collider": "capsule", "on_ground": True,
+                          "motion": {"waypoints": lap, "speed": 1.2, "loop": True}})
     lights = [point_light("white", (1.0, 1.0, 1.0), 1.0),
               point_light("blue", (0.35, 0.5, 1.0), 0.6),
               point_light("yellow", (1.0, 0.85, 0.35), 0.7)]
@@ -284,14 +296,116 @@ def village(effects):
         "wind": wind,
         "fog": fog,
         "occlusion": {"resolution": 256, "tilt": 0.25},
+        # Snow on everything no rectangle was declared for: the snowman, the
+        # fence, the porch posts' tops.
+        "cover": {"min": [-10.0, -10.0], "max": [10.0, 10.0], "cell": 0.1},
     }
     if effects:
         snow["spectral"] = {"size_xy": 64, "size_t": 32, "speed": 1.0, "band_low": 4.0,
                             "band_high": 16.0, "opacity": 0.5, "start_distance": 25.0}
     snow["camera"] = CAMERA
     snow["environment"] = ENVIRONMENT
-    roots = [ground, house, porch] + posts + [garage, fence, snowman] + lamps
+    roots = [ground, house, porch] + posts + [garage, fence, snowman, walker] + lamps
     return g.document("village effects" if effects else "village", roots, snow, lights)
+
+
+def terrain(half, n, height):
+    """A hilly (n x n quads) terrain over [-half, half]^2, smooth normals."""
+    def y(x, z):
+        return height(x, z)
+    positions, normals, indices = [], [], []
+    step = 2.0 * half / n
+    for j in range(n + 1):
+        for i in range(n + 1):
+            x, z = -half + i * step, -half + j * step
+            positions.append([round(x, 6), round(y(x, z), 6), round(z, 6)])
+            e = 1e-3
+            dx = (y(x + e, z) - y(x - e, z)) / (2 * e)
+            dz = (y(x, z + e) - y(x, z - e)) / (2 * e)
+            normals.append([round(c, 6) for c in normalized([-dx, 1.0, -dz])])
+    row = n + 1
+    for j in range(n):
+        for i in range(n):
+            a, b = j * row + i, (j + 1) * row + i
+            indices += [a, b, a + 1, a + 1, b, b + 1]
+    return positions, normals, indices
+
+
+def cone(segments=12):
+    """A cone of radius 1 at y = 0 rising to its tip at y = 1, flat-shaded sides."""
+    positions, normals, indices = [], [], []
+    for s in range(segments):
+        p0, p1 = 2.0 * math.pi * s / segments, 2.0 * math.pi * (s + 1) / segments
+        a = [math.cos(p0), 0.0, -math.sin(p0)]
+        b = [math.cos(p1), 0.0, -math.sin(p1)]
+        tip = [0.0, 1.0, 0.0]
+        n = normalized(cross(sub(b, a), sub(tip, a)))
+        base = len(positions)
+        positions += [[round(c, 9) for c in v] for v in (a, b, tip)]
+        normals += [[round(c, 9) for c in n]] * 3
+        indices += [base, base + 1, base + 2]
+    return positions, normals, indices
+
+
+def park_height(x, z):
+    """Rolling hills, 0 at the plaza in the middle."""
+    r2 = x * x + z * z
+    plaza = 1.0 - math.exp(-r2 / 18.0)
+    return round(plaza * (0.9 * math.sin(0.35 * x) * math.cos(0.3 * z) + 0.6 +
+                          0.4 * math.sin(0.5 * z + 0.7)), 6)
+
+
+def park():
+    """Snow on geometry nobody declared a surface for: terrain, a statue, benches, trees."""
+    g = Gltf()
+    box = g.geometry(unit_box())
+    sphere = g.geometry(unit_sphere(12, 16))
+    tree = g.geometry(cone())
+    hills = g.geometry(terrain(12.0, 48, park_height))
+    m_grass = g.material("frozen grass", (0.33, 0.38, 0.28))
+    m_stone = g.material("stone", (0.55, 0.55, 0.58))
+    m_bronze = g.material("bronze", (0.45, 0.33, 0.2))
+    m_wood = g.material("wood", (0.45, 0.32, 0.2))
+    m_pine = g.material("pine", (0.12, 0.3, 0.16))
+    ground = g.node("terrain", g.mesh("terrain", hills, m_grass), snow={"collider": "mesh"})
+    plinth = g.node("plinth", g.mesh("plinth", box, m_stone), translation=[0.0, 0.5, 0.0],
+                    scale=[1.6, 1.0, 1.6], snow={"collider": "box"})
+    figure = [g.node("statue %s" % part, g.mesh("statue " + part, sphere, m_bronze),
+                     translation=[0.0, y, 0.0], scale=[r, r, r], snow={"collider": "sphere"})
+              for part, y, r in (("hips", 1.45, 0.45), ("chest", 2.1, 0.38), ("head", 2.65, 0.22))]
+    arm = g.node("statue arm", g.mesh("statue arm", box, m_bronze), translation=[0.45, 2.2, 0.0],
+                 scale=[0.9, 0.14, 0.14], snow={"collider": "box"})
+    statue = g.node("statue", children=[plinth] + figure + [arm])
+    benches = []
+    for k, (x, z, turn) in enumerate(((-3.0, 2.5, False), (3.0, 2.5, False), (0.0, -3.2, True))):
+        sx, sz = (0.5, 1.8) if turn else (1.8, 0.5)
+        seat = g.node("bench %d seat" % k, g.mesh("bench seat", box, m_wood),
+                      translation=[0.0, 0.45, 0.0], scale=[sx, 0.08, sz], snow={"collider": "box"})
+        legs = [g.node("bench %d leg %d" % (k, i), g.mesh("bench leg", box, m_wood),
+                       translation=[dx, 0.2, dz], scale=[0.08, 0.4, 0.08], snow={"collider": "box"})
+                for i, (dx, dz) in enumerate(((-0.8, -0.2), (0.8, 0.2)) if not turn
+                                             else ((-0.2, -0.8), (0.2, 0.8)))]
+        benches.append(g.node("bench %d" % k, translation=[x, 0.0, z], children=[seat] + legs))
+    trees = []
+    for k, (x, z, h) in enumerate(((-7.0, -6.0, 4.0), (-5.0, 6.5, 3.2), (6.5, -5.5, 3.6),
+                                   (7.5, 5.0, 4.4), (-8.5, 1.0, 3.0))):
+        y0 = park_height(x, z) - 0.1
+        trees.append(g.node("tree %d" % k, g.mesh("tree", tree, m_pine), translation=[x, y0, z],
+                            scale=[0.35 * h, h, 0.35 * h], snow={"collider": "mesh"}))
+    snow = {
+        "simulation": {"dt": DT, "seed": 5, "max_flakes": 60000, "integrator": "euler",
+                       "threads": 1, "bounds": {"min": [-12.0, -0.5, -12.0],
+                                                "max": [12.0, 10.0, 12.0]}},
+        "emitter": dict(EMITTER, rate=4000.0),
+        "wind": {"base": [1.5, 0.0, 0.5], "walk": 0.2, "max_deviation": 0.6},
+        "fog": {"mode": "exponential", "color": [0.75, 0.78, 0.82], "density": 0.015},
+        "occlusion": {"resolution": 256, "tilt": 0.0},
+        "cover": {"min": [-12.0, -12.0], "max": [12.0, 12.0], "cell": 0.05},
+        "camera": {"position": [0.0, 6.0, 14.0], "target": [0.0, 1.0, 0.0], "fov_y_deg": 50.0,
+                   "near_plane": 0.05, "far_plane": 200.0},
+        "environment": ENVIRONMENT,
+    }
+    return g.document("park", [ground, statue] + benches + trees, snow)
 
 
 def minimal():
@@ -320,7 +434,7 @@ def render(value, depth=0):
 def main(argv):
     check = "--check" in argv[1:]
     scenes = {"village.gltf": village(False), "village_effects.gltf": village(True),
-              "minimal.gltf": minimal()}
+              "minimal.gltf": minimal(), "park.gltf": park()}
     OUT_DIR.mkdir(parents=True, exist_ok=True)
     stale = []
     for name, doc in scenes.items():

@@ -1,7 +1,8 @@
-// collide: flakes against the bounds, spheres, boxes and mesh tops (seed 002
-// §4; meshes through the sky map of seed 004). Detection runs in parallel over
+// collide: flakes against the bounds, spheres, boxes and mesh tops ([WF §4];
+// meshes through the sky map of [SKY]). Detection runs in parallel over
 // fixed chunks of slots; removals are applied afterwards in slot order, so the
 // free stack and the state hash do not depend on the thread count.
+#include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/jobs.hpp"
@@ -9,9 +10,12 @@
 #include "systems/narrow_phase.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/source_versions.hpp"
 #include "systems/systems.hpp"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -32,7 +36,8 @@ constexpr std::uint32_t block_shift = 3;
 /// World resource private to this file: per-slot "needs work" flags and
 /// candidate/removal lists (chunk c uses [c·flake_grain, ...)), sized to the
 /// pool capacity once; the SnowSurface of each ColliderGrid::holder_surfaces
-/// entry (rebuilt from SourceVersions::solids and ::surfaces); and, per 8×8 block of the
+/// entry and of each cover (rebuilt from SourceVersions::solids and
+/// ::surfaces); and, per 8×8 block of the
 /// occlusion map, the highest mesh top in it, so most flakes skip the
 /// (cache-missing) texel lookup (rebuilt from the map's version and
 /// SourceVersions::solids).
@@ -42,6 +47,7 @@ struct CollideScratch {
     std::vector<Removal> reasons;
     std::vector<std::uint32_t> counts;
     std::vector<const SnowSurface*> surfaces;
+    std::vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
     bool surfaces_built = false;
     std::uint64_t surfaces_solids_version = 0;
     std::uint64_t surfaces_version = 0;
@@ -59,7 +65,15 @@ struct Context {
     const float* mesh_block_top = nullptr;
     std::uint32_t blocks_x = 0;
     const SnowSurface* const* surfaces = nullptr;
+    const SnowSurface* const* covers = nullptr;
+    std::uint32_t cover_count = 0;
+    const Body* bodies = nullptr;
+    std::uint32_t body_count = 0;
+    Aabb body_box{
+        glm::vec3{std::numeric_limits<float>::infinity()},
+        glm::vec3{-std::numeric_limits<float>::infinity()}}; ///< where bodies swept this tick
     Aabb bounds;
+    float dt = 0.0f;
     /// Path lengths (m) per axis this tick at or above which a flake may have
     /// started outside the 3×3 cells around it (y: through a tilted map
     /// lookup), so cell_reach cannot clear it.
@@ -73,6 +87,15 @@ struct Context {
 bool is_long(const Context& c, float dx, float dy, float dz) {
     const float ax = std::abs(dx), ay = std::abs(dy), az = std::abs(dz);
     return !(ax < c.far_x) | !(az < c.far_z) | !(ay < c.far_y);
+}
+
+/// The path (x0, y0, z0)→(x, y, z) comes near `b` (its bounding box meets
+/// the box). Selects only, so the flagging loop stays branch-free.
+bool path_near(const Aabb& b, float x, float y, float z, float x0, float y0, float z0) {
+    const bool meets_x = ((x < x0 ? x : x0) <= b.max.x) & ((x < x0 ? x0 : x) >= b.min.x);
+    const bool meets_y = ((y < y0 ? y : y0) <= b.max.y) & ((y < y0 ? y0 : y) >= b.min.y);
+    const bool meets_z = ((z < z0 ? z : z0) <= b.max.z) & ((z < z0 ? z0 : z) >= b.min.z);
+    return meets_x & meets_y & meets_z;
 }
 
 /// Result of the per-flake tests for a flake that is still inside the bounds.
@@ -89,13 +112,35 @@ bool covered(const Context& c, std::uint32_t begin, std::uint32_t end, float x, 
     return false;
 }
 
+/// A flake met geometry at `at`. When that is the top of a cover's column
+/// (within the slope a cell spans), it is placed on the cover's snow top for
+/// the deposit system and true is returned.
+bool cover_catches(const Context& c, const glm::vec3& at, glm::vec3& p, glm::vec3& v) {
+    for (std::uint32_t k = 0; k < c.cover_count; ++k) {
+        const SnowSurface& s = *c.covers[k];
+        std::uint32_t ix = 0, iz = 0;
+        if (!s.cell_at(at.x, at.z, ix, iz)) {
+            continue;
+        }
+        const std::size_t i = s.index(ix, iz);
+        if (!s.is_void(i) && at.y >= s.height(s.base_level[i]) - 2.0f * s.cell) {
+            p = {at.x, s.top_y(i), at.z};
+            v = glm::vec3{0.0f};
+            return true;
+        }
+    }
+    return false;
+}
+
 /// A flake reached the top of a solid at `at`: it waits there for the
-/// deposit system when a surface of the solid covers the spot, otherwise it
-/// lands on bare geometry and leaves the books (it would rest there forever).
+/// deposit system when a surface of the solid or a cover covers the spot,
+/// otherwise it lands on bare geometry and leaves the books (it would rest
+/// there forever).
 Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t surf_end,
                     const glm::vec3& at, glm::vec3& p, glm::vec3& v, bool& moved) {
     if (!covered(c, surf_begin, surf_end, at.x, at.z)) {
-        return Outcome::bare;
+        moved = cover_catches(c, at, p, v);
+        return moved ? Outcome::keep : Outcome::bare;
     }
     p = at;
     v.y = 0.0f;
@@ -107,6 +152,7 @@ Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t su
 struct FirstContact {
     std::uint32_t item = 0; ///< as in ColliderGrid::cell_items
     BoxContact box;         ///< when the item is a box
+    float t = 0.0f;         ///< where along the path
     bool found = false;
 };
 
@@ -137,7 +183,7 @@ FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm
                 }
                 if (hit && t < best) { // strict: the first listed wins a tie
                     best = t;
-                    first = FirstContact{item, k, true};
+                    first = FirstContact{item, k, t, true};
                 }
             }
         }
@@ -161,7 +207,10 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             break;
         }
         if ((f.item & ColliderGrid::sphere_tag) != 0) {
-            return Outcome::sphere; // seed 002 §4: the sphere eliminates it
+            // [WF §4]: the sphere eliminates it, unless a cover holds snow there.
+            done = cover_catches(c, p0 + (p - p0) * f.t, p, v);
+            moved = moved || done;
+            return done ? Outcome::keep : Outcome::sphere;
         }
         const GridBox& b = g.boxes[f.item];
         const BoxContact& k = f.box;
@@ -169,7 +218,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
             done = true;
             return land_on_top(c, b.surf_begin, b.surf_end, k.at, p, v, moved);
         }
-        // Seed 002 §4: to the nearest point outside (on the face); the motion
+        // [WF §4]: to the nearest point outside (on the face); the motion
         // along the face is kept, so the flake slides and drifts build at
         // windward bases.
         p[k.axis] = k.at[k.axis];
@@ -179,7 +228,7 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
     return Outcome::keep;
 }
 
-/// A mesh top from the sky map (seed 004): only a flake that crossed the
+/// A mesh top from the sky map [SKY]: only a flake that crossed the
 /// top from above this tick lands; one that came in sideways is left alone.
 Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v, bool& moved) {
     std::uint32_t ti = 0, tj = 0;
@@ -201,6 +250,23 @@ Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3&
     return land_on_top(c, m->surf_begin, m->surf_end, glm::vec3{p.x, top, p.z}, p, v, moved);
 }
 
+/// Moving bodies, each tested in its own frame: the flake's path this tick,
+/// from its start (FlakePool::start_*) to p, less the body's motion from
+/// `previous` to `position`, so a body sweeping over a resting flake meets it
+/// too. A flake that enters is put on the body's surface and moves with it.
+void push_out_of_bodies(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v,
+                        bool& moved) {
+    for (std::uint32_t k = 0; k < c.body_count; ++k) {
+        const Body& b = c.bodies[k];
+        glm::vec3 out{0.0f};
+        if (body_contact(b, p0 - b.previous, p - b.position, out)) {
+            p = b.position + out;
+            v = (b.position - b.previous) / c.dt;
+            moved = true;
+        }
+    }
+}
+
 /// Every collider test for one flake that may meet something (finite position).
 Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
@@ -215,6 +281,9 @@ Outcome resolve(const Context& c, std::size_t i) {
         if (!(std::min(p.y, p0.y) > mesh_reach) || is_long(c, p.x - p0.x, p.y - p0.y, p.z - p0.z)) {
             out = mesh_top(c, p0, p, v, moved);
         }
+    }
+    if (out == Outcome::keep && path_near(c.body_box, p.x, p.y, p.z, p0.x, p0.y, p0.z)) {
+        push_out_of_bodies(c, p0, p, v, moved);
     }
     if (out == Outcome::keep && moved) { // untouched flakes leave their cache lines clean
         f.px[i] = p.x;
@@ -245,14 +314,15 @@ void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __
     const Aabb bb = c.bounds;
     for (std::size_t i = b; i < e; ++i) {
         const float x = px[i], y = py[i], z = pz[i];
-        // Seed 002 §4: flakes outside the world's bounds are deactivated (NaN too).
+        // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
         const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];
         const float y0 = sy[i];
         const bool low = !((y < y0 ? y : y0) > top);
         const bool far = is_long(c, x - sx[i], y - y0, z - sz[i]);
-        flags[i - b] = (mass[i] != 0) & (!inside | low | far) ? 1 : 0;
+        const bool body = path_near(c.body_box, x, y, z, sx[i], y0, sz[i]);
+        flags[i - b] = (mass[i] != 0) & (!inside | low | far | body) ? 1 : 0;
     }
 }
 
@@ -318,13 +388,19 @@ CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid&
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
-    // Surfaces move in memory only when one is added or removed; the grid's
-    // list of them changes order only with the solids and the surfaces.
+    // Surfaces (covers too) move in memory only when one is added or removed;
+    // the grid's list of them changes order only with the solids and the surfaces.
     if (!s->surfaces_built || s->surfaces_solids_version != versions.solids ||
         s->surfaces_version != versions.surfaces) {
         s->surfaces.resize(grid.holder_surfaces.size());
         for (std::size_t i = 0; i < grid.holder_surfaces.size(); ++i) {
             s->surfaces[i] = &w.get<SnowSurface>(grid.holder_surfaces[i]);
+        }
+        s->covers.clear();
+        if (const auto* covers = w.find_pool<SnowCover>()) {
+            for (const Entity e : covers->entities()) {
+                s->covers.push_back(&w.get<SnowSurface>(e));
+            }
         }
         s->surfaces_solids_version = versions.solids;
         s->surfaces_version = versions.surfaces;
@@ -378,7 +454,22 @@ void collide_system(World& w) {
         c.blocks_x = scratch.blocks_x;
     }
     c.surfaces = scratch.surfaces.data();
-    c.bounds = w.resource<SimConfig>().bounds;
+    c.covers = scratch.covers.data();
+    c.cover_count = static_cast<std::uint32_t>(scratch.covers.size());
+    const auto& cfg = w.resource<SimConfig>();
+    c.bounds = cfg.bounds;
+    c.dt = cfg.dt;
+    if (const auto* bodies = w.find_pool<Body>(); bodies != nullptr && bodies->size() > 0) {
+        c.bodies = bodies->components().data();
+        c.body_count = static_cast<std::uint32_t>(bodies->size());
+        // Where they swept this tick: a flake whose path misses this box meets none.
+        for (const Body& b : bodies->components()) {
+            const glm::vec3 r{b.shape == BodyShape::box ? b.half_extents : glm::vec3{b.reach()}};
+            const glm::vec3 lift{0.0f, b.shape == BodyShape::capsule ? b.half_height : 0.0f, 0.0f};
+            c.body_box.min = glm::min(c.body_box.min, glm::min(b.previous, b.position) - r - lift);
+            c.body_box.max = glm::max(c.body_box.max, glm::max(b.previous, b.position) + r + lift);
+        }
+    }
     // 0.9 of a cell leaves margin for the rounding of the cell indices.
     c.far_x = 0.9f * grid.cell_size_x;
     c.far_z = 0.9f * grid.cell_size_z;

@@ -1,4 +1,4 @@
-// collider_grid: the cell index of box and sphere colliders (seed 002 §8).
+// collider_grid: the cell index of box and sphere colliders [WF §8].
 // Built only when the solids or the surfaces change (source_versions.hpp), so
 // its allocations never happen in a steady tick.
 #include "systems/collider_grid.hpp"

@@ -1,7 +1,7 @@
 /// @file collider_grid.hpp
 /// @brief A uniform XZ grid over the simulation bounds that lists the box and
 /// sphere colliders overlapping each cell, so a flake is tested only against
-/// the colliders near it (the cell index seed 002 §8 proposes). Rebuilt from
+/// the colliders near it (the cell index [WF §8] proposes). Rebuilt from
 /// the World whenever the solids or the surfaces change (source_versions.hpp);
 /// it is a World resource so the cache lives and dies with its World.
 #pragma once

@@ -1,6 +1,6 @@
 // deposit: a flake that reached the snow top of a surface becomes snow there
-// (seed 002 §4: the height field grows by the flake's mass), then rolls at most
-// one cell by the deposition rules of seed 003 §IV.
+// ([WF §4]: the height field grows by the flake's mass), then rolls at most
+// one cell by the deposition rules of [ZCL §IV].
 //
 // Detection runs in parallel over fixed chunks of flake slots and only writes
 // landing records; the records are applied in slot order afterwards, so the
@@ -9,6 +9,7 @@
 #include "systems/deposit_bins.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/jobs.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/source_versions.hpp"
@@ -128,7 +129,7 @@ void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::si
     }
 }
 
-/// Seed 003 §IV deposition rules for snow arriving on cell c: no lower
+/// [ZCL §IV] deposition rules for snow arriving on cell c: no lower
 /// neighbour -> stays (rule 1); otherwise one of the n lower neighbours with
 /// probability 1/n each, which is 25% each when all four are equal and lower
 /// (rule 2) and 1/n in general (rule 3). Returns the cell that receives it.
@@ -185,7 +186,8 @@ void deposit_system(World& w) {
     for (std::size_t c = 0; c < chunks; ++c) {
         for (const LandingRecord& r : d->chunks[c]) {
             SnowSurface& s = surfaces[r.surface];
-            const std::size_t dst = roll_target(s, r.cell, {cfg.seed, tick, r.slot, Stream::roll});
+            const std::size_t dst =
+                roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];
             s.mark_dirty(static_cast<std::uint32_t>(dst % s.nx),
                          static_cast<std::uint32_t>(dst / s.nx));

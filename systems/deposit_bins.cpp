@@ -65,11 +65,34 @@ void rebuild(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
     }
     d.bin_top.assign(bins, -std::numeric_limits<float>::infinity());
     d.bounds.assign(surfaces.size(), std::numeric_limits<std::int64_t>::min());
-    // Bare tops are fixed when a surface is made; only snow changes after.
+    // Bare tops change only with base_version (part of the key); void cells catch nothing.
     d.min_bare.clear();
+    d.base_versions.clear();
     for (const SnowSurface& s : surfaces) {
-        d.min_bare.push_back(s.height(*std::min_element(s.base_level.begin(), s.base_level.end())));
+        std::int64_t lowest = std::numeric_limits<std::int64_t>::max();
+        for (const std::int64_t b : s.base_level) {
+            lowest = b != void_level ? std::min(lowest, b) : lowest;
+        }
+        d.min_bare.push_back(lowest == std::numeric_limits<std::int64_t>::max()
+                                 ? std::numeric_limits<float>::infinity()
+                                 : s.height(lowest));
+        d.base_versions.push_back(s.base_version);
     }
+}
+
+/// The bins' surfaces and bare tops are the current ones.
+bool current(const DepositBins& d, const std::vector<SnowSurface>& surfaces,
+             std::uint64_t surfaces_version) {
+    if (!d.built || d.surfaces_version != surfaces_version ||
+        d.base_versions.size() != surfaces.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        if (d.base_versions[i] != surfaces[i].base_version) {
+            return false;
+        }
+    }
+    return true;
 }
 
 /// Raises bin tops to each surface's level_bound (plus tolerance), and
@@ -111,7 +134,7 @@ void refresh_tops(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
 
 void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surfaces,
                          std::uint64_t surfaces_version) {
-    if (!bins.built || bins.surfaces_version != surfaces_version) {
+    if (!current(bins, surfaces, surfaces_version)) {
         rebuild(bins, surfaces);
         bins.surfaces_version = surfaces_version;
         bins.built = true;

@@ -2,7 +2,8 @@
 /// @brief The deposit system's prefilter: a coarse XZ grid of bins over the
 /// surfaces, each listing the surfaces overlapping it and the highest y at
 /// which a flake over it can still land, so a flake far above every surface
-/// costs one lookup. Rebuilt from SourceVersions::surfaces; its bin tops
+/// costs one lookup. Rebuilt from SourceVersions::surfaces and each
+/// surface's base_version (a cover's base follows its geometry); its bin tops
 /// follow each surface's level_bound (source_versions.hpp).
 #pragma once
 
@@ -50,15 +51,16 @@ struct BinGrid {
 ///
 /// Under a raised surface (a roof over the ground) a bin's highest y is the
 /// roof's, yet a flake between the ground and the roof, not crossing the roof
-/// this tick, can land on neither (flakes sliding down walls, seed 002 §4).
+/// this tick, can land on neither (flakes sliding down walls, [WF §4]).
 /// Two scene-wide heights exclude it: every flake that lands on the lowest
 /// surface of its bin is at or below `floor_top`; every flake that lands on
 /// another one is, now or at the start of its tick, at or above `upper_bare`.
 struct DepositBins {
     bool built = false;
-    std::uint64_t surfaces_version = 0; ///< SourceVersions::surfaces it was built from
-    std::vector<std::int64_t> bounds;   ///< level_bound per surface when bin_top was set
-    std::vector<float> min_bare;        ///< lowest bare top (m) per surface
+    std::uint64_t surfaces_version = 0;       ///< SourceVersions::surfaces it was built from
+    std::vector<std::uint64_t> base_versions; ///< SnowSurface::base_version per surface, the same
+    std::vector<std::int64_t> bounds;         ///< level_bound per surface when bin_top was set
+    std::vector<float> min_bare;              ///< lowest bare top (m) per surface; +inf if all void
     float floor_top = 0.0f;  ///< max over bins: highest y landing on the bin's lowest surface
     float upper_bare = 0.0f; ///< min over bins: lowest bare top of the others, less tolerance
     BinGrid grid;
@@ -75,8 +77,8 @@ struct DepositBins {
 };
 
 /// Brings the bins up to date with the surfaces (pool order) of version
-/// `surfaces_version`: rebuilt when that changed, bin tops raised when a
-/// level_bound moved.
+/// `surfaces_version`: rebuilt when that or a base_version changed, bin tops
+/// raised when a level_bound moved.
 void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surfaces,
                          std::uint64_t surfaces_version);
 

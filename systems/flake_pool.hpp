@@ -1,6 +1,6 @@
 /// @file flake_pool.hpp
 /// @brief All snowflakes as one structure-of-arrays pool with a free-index
-/// stack (seed 003 §III.B): up to millions of flakes, not one entity each.
+/// stack [ZCL §III.B]: up to millions of flakes, not one entity each.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 /// @file fog.hpp
-/// @brief Fog settings (seeds 001 and 004). Declared by a scene or absent;
+/// @brief Fog settings ([PE], [SKY]). Declared by a scene or absent;
 /// absent means no fog code is compiled or run.
 #pragma once
 
@@ -12,12 +12,12 @@
 namespace snow {
 
 enum class FogMode : std::uint8_t {
-    exponential, ///< e^(−density·z), seed 004
-    half_life,   ///< 0.5^(d/D), seed 001
-    layered,     ///< ∫ density(y) via table E(y), seed 001
+    exponential, ///< e^(−density·z), [SKY]
+    half_life,   ///< 0.5^(d/D), [PE]
+    layered,     ///< ∫ density(y) via table E(y), [PE]
 };
 
-/// A Gaussian (or Gabor, when frequency > 0) fog puff, seed 001.
+/// A Gaussian (or Gabor, when frequency > 0) fog puff, [PE].
 struct FogPuff {
     glm::vec3 center{0.0f};
     float sigma = 1.0f;

@@ -1,4 +1,4 @@
-// integrate: F = m·g + k·(w − v), a = F/m (seeds 002 §3, 003 §III.C), one
+// integrate: F = m·g + k·(w − v), a = F/m ([WF §3], [ZCL §III.C]), one
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //
@@ -6,10 +6,11 @@
 // in from the positions) into px/py/pz: the start is produced here, once, for
 // collide and deposit.
 //
-// The guarded pass is one branch-free loop over distinct (ivdep) arrays so
-// GCC vectorises it (selects need -fno-trapping-math, set project-wide); it
-// computes exactly what the scalar rule computes, lane by lane (no FMA
-// contraction, no reassociation), so SIMD and scalar builds agree bit for bit.
+// The guarded pass is one branch-free loop over distinct (__restrict) arrays
+// so GCC and Clang vectorise it (selects need -fno-trapping-math, set
+// project-wide); it computes exactly what the scalar rule computes, lane by
+// lane (no FMA contraction, no reassociation), so SIMD and scalar builds agree
+// bit for bit.
 #include "systems/flake_pool.hpp"
 #include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
@@ -62,24 +63,17 @@ inline float blend(std::uint32_t mask, float a, float b) {
 
 /// The rule for every alive slot of [0, n) whose c·dt <= limit; every other
 /// slot keeps its start. Returns how many alive slots were over the limit
-/// (left at their start for the exact pass).
+/// (left at their start for the exact pass). The arrays are distinct
+/// (__restrict): that spares GCC the run-time alias checks it would otherwise
+/// need (it gives up past 10 and stays scalar), and Clang the same.
 template <AxisRule rule>
-std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const float limit) {
-    const float* sx = l.sx;
-    const float* sy = l.sy;
-    const float* sz = l.sz;
-    float* px = l.px;
-    float* py = l.py;
-    float* pz = l.pz;
-    float* vx = l.vx;
-    float* vy = l.vy;
-    float* vz = l.vz;
-    const float* kom = l.kom;
-    const std::uint32_t* mass = l.mass;
+std::uint32_t guarded_lanes(const float* __restrict sx, const float* __restrict sy,
+                            const float* __restrict sz, float* __restrict px, float* __restrict py,
+                            float* __restrict pz, float* __restrict vx, float* __restrict vy,
+                            float* __restrict vz, const float* __restrict kom,
+                            const std::uint32_t* __restrict mass, std::size_t n, const Params q,
+                            const float limit) {
     std::uint32_t stiff = 0;
-    // The arrays are distinct: ivdep spares GCC the run-time alias checks
-    // it would otherwise need (it gives up past 10 and stays scalar).
-#pragma GCC ivdep
     for (std::size_t i = 0; i < n; ++i) {
         const float c = kom[i];
         const float x0 = sx[i], y0 = sy[i], z0 = sz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
@@ -103,6 +97,12 @@ std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params q, const 
         stiff += (alive & over) ? 1u : 0u;
     }
     return stiff;
+}
+
+template <AxisRule rule>
+std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params& q, float limit) {
+    return guarded_lanes<rule>(l.sx, l.sy, l.sz, l.px, l.py, l.pz, l.vx, l.vy, l.vz, l.kom, l.mass,
+                               n, q, limit);
 }
 
 /// Exact update for the alive slots of [0, n) a guarded pass skipped.

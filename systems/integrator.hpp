@@ -1,6 +1,6 @@
 /// @file integrator.hpp
 /// @brief One-axis update rules for gravity + linear drag towards the wind:
-/// dv/dt = g + c·(w − v), dp/dt = v, with c = k/m (seed 002 §3; note the seed
+/// dv/dt = g + c·(w − v), dp/dt = v, with c = k/m ([WF §3]; note the paper
 /// prints k(v − v_wind), whose sign would accelerate flakes, so we use k(w − v)).
 /// The axes are independent, so a flake is three calls. All inline and
 /// branch-free so the SoA loops vectorise; the same functions serve the
@@ -11,8 +11,8 @@
 
 namespace snow::integrate {
 
-/// Explicit Euler as in seed 003 eqs. (1)-(3): v += a·dt, then p += v·dt.
-/// Oscillates for c·dt > 1 and diverges past 2 (RELIABILITY.md).
+/// Explicit Euler as in [ZCL eqs. 1–3]: v += a·dt, then p += v·dt.
+/// Oscillates for c·dt > 1 and diverges past 2 (docs/design.md "Numerical stability").
 inline void explicit_euler(float& p, float& v, float c, float g, float w, float dt) {
     const float a = g + c * (w - v);
     v = v + a * dt;

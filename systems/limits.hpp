@@ -27,6 +27,14 @@ inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
 /// products in redistribution stay far inside 64/128-bit range.
 inline constexpr double max_surface_level = 1.0e15;
 
+// -- covers --
+/// Largest cover (cells in all).
+inline constexpr std::uint64_t max_cover_cells = 4096ull * 4096ull;
+
+// -- moving bodies --
+inline constexpr double max_body_size = 100.0;   ///< radius, half extent or half height (m)
+inline constexpr double max_body_speed = 1000.0; ///< m/s along a scripted path
+
 // -- the occlusion camera --
 inline constexpr std::uint32_t max_occlusion_resolution = 4096; ///< texels per side
 inline constexpr double max_occlusion_tilt = 1.2;               ///< |tilt| (radians)

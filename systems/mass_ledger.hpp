@@ -1,5 +1,5 @@
 /// @file mass_ledger.hpp
-/// @brief Exact snow-mass bookkeeping in integer units (DESIGN.md "Numbers").
+/// @brief Exact snow-mass bookkeeping in integer units (docs/design.md "Mass").
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@ namespace snow {
 struct MassLedger {
     std::uint64_t spawned = 0;
     std::uint64_t removed_bounds = 0;  ///< left the simulation box
-    std::uint64_t removed_sphere = 0;  ///< eliminated by sphere colliders (seed 002 §4)
+    std::uint64_t removed_sphere = 0;  ///< eliminated by sphere colliders [WF §4]
     std::uint64_t removed_bare = 0;    ///< landed on geometry without a snow surface
     std::uint64_t removed_surface = 0; ///< settled on a surface the embedder removed
     [[nodiscard]] std::uint64_t removed() const {
@@ -19,13 +19,17 @@ struct MassLedger {
     }
 };
 
-/// The invariant `spawned == airborne + settled + removed`, all in units.
+/// The invariant `spawned == airborne + settled + carried + removed`, all in
+/// units; `carried` is the snow snowballs picked up.
 struct MassReport {
     std::uint64_t spawned = 0;
     std::uint64_t airborne = 0;
     std::uint64_t settled = 0;
+    std::uint64_t carried = 0;
     std::uint64_t removed = 0;
-    [[nodiscard]] bool balanced() const { return spawned == airborne + settled + removed; }
+    [[nodiscard]] bool balanced() const {
+        return spawned == airborne + settled + carried + removed;
+    }
 };
 
 } // namespace snow

@@ -1,5 +1,6 @@
 // narrow_phase: segment against open box and open sphere, the exact tests
-// behind collide's slides, landings and sphere removals (seed 002 §4).
+// behind collide's slides, landings and sphere removals [WF §4], and the
+// flake-against-moving-body test.
 #include "systems/narrow_phase.hpp"
 
 #include <glm/common.hpp>
@@ -108,6 +109,39 @@ bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1, BoxCon
     }
     k.at[axis] = max_side ? b.max[axis] : b.min[axis];
     k.t = enter;
+    return true;
+}
+
+bool body_contact(const Body& b, const glm::vec3& a, const glm::vec3& e, glm::vec3& out) {
+    switch (b.shape) {
+    case BodyShape::box: {
+        BoxContact k;
+        if (!box_contact(Aabb{-b.half_extents, b.half_extents}, a, e, k)) {
+            return false;
+        }
+        out = k.at;
+        return true;
+    }
+    case BodyShape::capsule: {
+        const glm::vec3 core{0.0f, std::clamp(e.y, -b.half_height, b.half_height), 0.0f};
+        const glm::vec3 d = e - core;
+        const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        if (!(len < b.radius)) {
+            return false;
+        }
+        out = core + (len > 0.0f ? d / len : glm::vec3{1.0f, 0.0f, 0.0f}) * b.radius;
+        return true;
+    }
+    case BodyShape::sphere:
+        break;
+    }
+    float t = 0.0f;
+    if (!sphere_entry(a, e, glm::vec3{0.0f}, b.radius, t)) {
+        return false;
+    }
+    const glm::vec3 q = a + (e - a) * t;
+    const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    out = (len > 0.0f ? q / len : glm::vec3{0.0f, 1.0f, 0.0f}) * b.radius;
     return true;
 }
 

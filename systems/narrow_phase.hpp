@@ -1,10 +1,11 @@
 /// @file narrow_phase.hpp
 /// @brief Exact tests of one flake's path this tick, the segment p0→p1,
-/// against one collider shape (seed 002 §4). Swept, so a fast flake cannot
+/// against one collider shape [WF §4] or moving body. Swept, so a fast flake cannot
 /// jump over a shape in one tick. The collide system picks the shapes near
 /// the path (collider_grid.hpp) and calls these.
 #pragma once
 
+#include "systems/body.hpp"
 #include "systems/geometry.hpp"
 
 #include <glm/vec3.hpp>
@@ -33,5 +34,12 @@ struct BoxContact {
 /// segment never reaches the interior or is leaving it.
 [[nodiscard]] bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1,
                                BoxContact& k);
+
+/// Where the relative path a→e (a flake's path in a moving body's frame,
+/// the body's centre at the origin) meets the body: the point on its surface
+/// the flake is put on. Spheres are swept; boxes by the slab test above;
+/// capsules test the path's end.
+[[nodiscard]] bool body_contact(const Body& b, const glm::vec3& a, const glm::vec3& e,
+                                glm::vec3& out);
 
 } // namespace snow

@@ -1,7 +1,7 @@
-// occlusion: the sky camera of seed 004. An orthographic depth map from above
+// occlusion: the sky camera of [SKY]. An orthographic depth map from above
 // over the bounds' XZ extent, rasterised on the CPU: per texel the highest
 // geometry and its entity. With a tilt the rays lean downwind, like the flakes,
-// so lee sides get less exposure (seed 004 "Limitations" 2: wind). Refreshed
+// so lee sides get less exposure ([SKY Limitations 2]: wind). Refreshed
 // only when the sources (source_versions.hpp) or the quantised wind direction
 // changed; occlusion_raster.cpp draws it.
 #include "systems/occlusion.hpp"
@@ -134,7 +134,7 @@ void occlusion_system(World& w) {
     const std::size_t texels = static_cast<std::size_t>(l.width) * l.height;
     map->top_y.assign(texels, neg_inf);
     map->top_id.assign(texels, 0);
-    rasterise_scene(w, *map);
+    rasterise_geometry(w, *map);
     map->built = true;
     map->built_from = sources;
     ++map->version;

@@ -1,5 +1,5 @@
 /// @file occlusion.hpp
-/// @brief The occlusion ("sky") camera of seed 004: an orthographic depth map
+/// @brief The occlusion ("sky") camera of [SKY]: an orthographic depth map
 /// from above, rasterised on the CPU from the scene's meshes.
 #pragma once
 

@@ -1,8 +1,9 @@
 // occlusion_raster: triangles, boxes, spheres and surface tops into the sky
-// map of seed 004, in double precision, texel centres sampled.
+// map of [SKY], in double precision, texel centres sampled.
 #include "systems/occlusion_raster.hpp"
 
 #include "systems/colliders.hpp"
+#include "systems/snow_cover.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,7 @@ void Rasteriser::surface(const SnowSurface& s, std::uint32_t id) {
     triangle(q[0], q[2], q[3], id);
 }
 
-void rasterise_scene(const World& w, OcclusionMap& m) {
+void rasterise_geometry(const World& w, OcclusionMap& m) {
     Rasteriser r(m);
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) { r.box(b.box, e.bits); });
     w.each<SphereCollider>(
@@ -133,6 +134,9 @@ void rasterise_scene(const World& w, OcclusionMap& m) {
         }
     });
     w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
+        if (w.has<SnowCover>(e)) {
+            return;
+        }
         const auto* of = w.try_get<SurfaceOf>(e);
         r.surface(s, of != nullptr && !of->owner.is_null() ? of->owner.bits : e.bits);
     });

@@ -1,7 +1,8 @@
 /// @file occlusion_raster.hpp
-/// @brief The CPU rasteriser of the occlusion ("sky") map of seed 004: per
+/// @brief The CPU rasteriser of the occlusion ("sky") map of [SKY]: per
 /// texel the highest geometry along the (possibly tilted) projection and the
-/// entity it belongs to.
+/// entity it belongs to. The occlusion system and the snow cover
+/// (snow_cover.hpp) both draw through it.
 #pragma once
 
 #include "ecs/world.hpp"
@@ -42,9 +43,11 @@ class Rasteriser {
     double sx_, sz_;
 };
 
-/// Rasterises every collider of the world, then every surface (a surface on a
-/// solid speaks for that solid, so collision sees the owner; the ground
-/// speaks for itself). Colliders are drawn first, so they keep their ids on ties.
-void rasterise_scene(const World& w, OcclusionMap& m);
+/// Rasterises every collider of the world, then every declared surface's bare
+/// top (a surface on a solid speaks for that solid, so collision sees the
+/// owner; the ground speaks for itself). Colliders are drawn first, so they
+/// keep their ids on ties. Covers are left out: a cover is snow over the
+/// geometry, not geometry.
+void rasterise_geometry(const World& w, OcclusionMap& m);
 
 } // namespace snow

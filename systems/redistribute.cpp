@@ -1,8 +1,8 @@
-// redistribute: the Laplacian cap of seed 002 §3. Where a cell stands more
+// redistribute: the Laplacian cap of [WF §3]. Where a cell stands more
 // than the cap above its neighbours (n·h_c − Σh_nb > limit, in integer levels),
 // snow moves from it to its lower neighbours.
 //
-// Seed 002 §4/§6 reports blow-ups when snow lands faster than one smoothing
+// [WF §4, §6] reports blow-ups when snow lands faster than one smoothing
 // step per tick can spread it. Here a tick sub-iterates until no snow moves
 // (or an iteration cap, then it goes on next tick), and every step is a
 // two-buffer (Jacobi) update whose per-edge flow is at most 1/8 of the height
@@ -162,21 +162,24 @@ std::int64_t cell_outflow(TileGrid& g, std::uint32_t ix, std::uint32_t iz) {
         sum += d[k];
         lower_sum += d[k] > 0 ? d[k] : 0;
     }
-    // seed 002 §3: n·h_c − Σh_nb (the discrete Laplacian, grid edges use the neighbours they have).
+    // [WF §3]: n·h_c − Σh_nb (the discrete Laplacian, grid edges use the neighbours they have).
     const std::int64_t excess = sum - s.laplacian_limit_units;
-    if (excess <= 0) {
+    const std::int64_t talus = s.talus_units;
+    if (excess <= 0 && talus == 0) {
         return 0;
     }
     // Moving q units off the cell lowers its own excess by (n + 1)·q.
-    const std::int64_t q = (excess + n) / (n + 1);
+    const std::int64_t q = excess > 0 ? (excess + n) / (n + 1) : 0;
     std::int64_t f[4] = {0, 0, 0, 0};
     std::int64_t total = 0;
     for (std::uint32_t k = 0; k < n; ++k) {
         if (d[k] <= 0) {
             continue;
         }
-        // Share of q in proportion to the drop, rounded up, capped per edge.
-        const auto share = static_cast<std::int64_t>((wide{q} * d[k] + lower_sum - 1) / lower_sum);
+        // Share of q in proportion to the drop, rounded up; a step steeper
+        // than the angle of repose sends what stands above it; capped per edge.
+        auto share = static_cast<std::int64_t>((wide{q} * d[k] + lower_sum - 1) / lower_sum);
+        share = talus > 0 && d[k] > talus ? std::max(share, d[k] - talus) : share;
         f[k] = std::min(share, d[k] / edge_divisor);
         total += f[k];
     }
@@ -329,7 +332,9 @@ void redistribute_system(World& w) {
         // First step: the cells whose cap may now fail, the marked ones and
         // their neighbours; per tile, or in one scan when most tiles are marked.
         ++counters.smoothing_iterations;
-        if (4 * s.dirty_tiles.size() >= tiles) {
+        // The scan's prefilter assumes four open edges: a cover's closed
+        // edges (drops, void cells) take the per-tile path.
+        if (4 * s.dirty_tiles.size() >= tiles && s.closed.empty()) {
             const Box r = Box{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}.grown(s.nx, s.nz);
             s.clear_dirty();
             scan_step(g, s, r);

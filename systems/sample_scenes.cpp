@@ -1,6 +1,7 @@
 #include "systems/sample_scenes.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 namespace snow {
 
@@ -83,6 +84,23 @@ std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
     cam.resolution = 96;
     cam.tilt = 0.5f;
     sim->set_occlusion(cam);
+    sim->add_sphere({4.5f, 0.2f, 5.0f}, 0.7f); // a boulder under a snow cover
+    CoverDef cover;
+    cover.min_x = 3.0f;
+    cover.min_z = 3.5f;
+    cover.max_x = 7.0f;
+    cover.max_z = 7.0f;
+    cover.cell = 0.1f;
+    sim->add_cover(cover);
+    // A snowball pressed into the ground doing laps: it takes the snow it rolls over.
+    BodyDef ball;
+    ball.radius = 0.3f;
+    ball.position = {-6.0f, 0.2f, -6.0f};
+    ball.snowball = true;
+    ball.motion.waypoints = {
+        {-6.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -3.0f}, {-6.0f, 0.2f, -3.0f}};
+    ball.motion.speed = 1.5f;
+    sim->add_body(ball);
     return sim;
 }
 
@@ -96,7 +114,7 @@ void prefill_flakes(Simulation& sim, std::uint32_t count) {
         if (!f.acquire(slot)) {
             return;
         }
-        const RngKey k{cfg.seed, ~0ull, slot, Stream::spawn_position};
+        const RngKey k{cfg.seed, ~0ull, slot, random_stream::spawn_position};
         f.px[slot] = rng_range(k, 0, lo.x, hi.x);
         f.py[slot] = rng_range(k, 1, lo.y + 0.5f * (hi.y - lo.y), hi.y);
         f.pz[slot] = rng_range(k, 2, lo.z, hi.z);

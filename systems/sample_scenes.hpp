@@ -1,6 +1,7 @@
 /// @file sample_scenes.hpp
 /// @brief Scenes built in code, shared by tests, benchmarks and examples
-/// (Box2D's shared/ habit), so they all measure the same thing.
+/// (as Box2D's samples and benchmarks share theirs), so they all measure the
+/// same thing.
 #pragma once
 
 #include "systems/simulation.hpp"
@@ -31,7 +32,8 @@ struct YardOptions {
 /// two threads share the work) and a heavy emitter; a walking, gusting wind;
 /// a mesh shelter whose snow-holding roof spills almost at once and a bare
 /// mesh tent, both seen through a tilted sky camera whose lean follows the
-/// wind.
+/// wind; a snow cover over a boulder; a snowball rolling laps through the
+/// ground's snow.
 [[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads);
 
 /// Places `count` airborne flakes uniformly in the upper part of the bounds

@@ -12,7 +12,7 @@
 namespace snow {
 
 enum class Integrator : std::uint8_t {
-    explicit_euler,      ///< v += a·dt, p += v·dt (seeds 002/003); guarded when stiff
+    explicit_euler,      ///< v += a·dt, p += v·dt ([WF], [ZCL]); guarded when stiff
     semi_implicit_euler, ///< implicit drag, then p += v_new·dt (never overshoots)
     exponential,         ///< exact update for gravity + linear drag to constant wind
     rk4,                 ///< classical Runge-Kutta, the accuracy reference
@@ -32,7 +32,7 @@ struct SimConfig {
     Aabb bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 12.0f, 10.0f}}; ///< flakes leaving it are removed
     std::uint32_t max_flakes = 50000;
     unsigned threads = 1;
-    /// Smoothing sub-iterations per surface per tick (seed 002 §3); a pile still
+    /// Smoothing sub-iterations per surface per tick [WF §3]; a pile still
     /// moving after that many continues next tick.
     std::uint32_t smoothing_iterations = 64;
 };

@@ -5,6 +5,7 @@
 #include "systems/validation.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace snow {
 
@@ -38,13 +39,16 @@ Simulation::Simulation(const SimConfig& config) {
 Simulation::~Simulation() = default;
 
 void Simulation::build_schedule() {
-    // Order is the tick's data flow (DESIGN.md); needs make absent effects free.
+    // Order is the tick's data flow (docs/design.md "One tick"); needs make absent effects free.
     const Requirement flakes = flakes_alive;
+    schedule_.add("cover", cover_system, {needs<SnowCover>()});
+    schedule_.add("bodies", body_system, {needs<Body>()});
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
     schedule_.add("integrate", integrate_system, {flakes});
     schedule_.add("collide", collide_system, {flakes});
     schedule_.add("deposit", deposit_system, {needs<SnowSurface>(), flakes});
+    schedule_.add("carve", carve_system, {needs<Body>(), needs<SnowSurface>()});
     schedule_.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule_.add("spill", spill_system, {needs<SnowSurface>()});
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
@@ -81,6 +85,87 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     }
     ++world_.resource<SourceVersions>().surfaces;
     return id;
+}
+
+Entity Simulation::add_cover(const CoverDef& def) {
+    std::string error;
+    SnowSurface surface = make_cover_surface(def, error);
+    throw_if(error);
+    const Entity id = world_.create();
+    world_.add<SnowSurface>(id, std::move(surface));
+    SnowCover cover;
+    cover.drop_limit = def.drop_limit;
+    world_.add<SnowCover>(id, std::move(cover));
+    ++world_.resource<SourceVersions>().surfaces;
+    return id;
+}
+
+Entity Simulation::add_body(const BodyDef& def) {
+    throw_if(validate(def));
+    const Entity id = world_.create();
+    world_.add<Body>(id, make_body(def));
+    return id;
+}
+
+Body& Simulation::body_for(Entity e, const char* call) {
+    Body* b = world_.alive(e) ? world_.try_get<Body>(e) : nullptr;
+    if (b == nullptr) {
+        throw SnowError(std::string(call) + ": entity is not a living body");
+    }
+    return *b;
+}
+
+void Simulation::move_body(Entity e, const glm::vec3& position) {
+    std::string err;
+    check::finite3(err, "move_body.position", position);
+    throw_if(err);
+    Body& b = body_for(e, "move_body");
+    b.target = position;
+    b.has_target = true;
+}
+
+void Simulation::set_body_velocity(Entity e, const glm::vec3& velocity) {
+    std::string err;
+    check::finite3(err, "set_body_velocity.velocity", velocity);
+    throw_if(err);
+    body_for(e, "set_body_velocity").velocity = velocity;
+}
+
+void Simulation::set_body_motion(Entity e, const BodyMotion& motion) {
+    throw_if(validate(motion));
+    Body& b = body_for(e, "set_body_motion");
+    b.motion = motion;
+    b.segment = 0;
+    b.along = 0.0f;
+}
+
+std::uint64_t Simulation::drop_snowball(Entity e) {
+    Body& b = body_for(e, "drop_snowball");
+    if (b.carried == 0) {
+        return 0;
+    }
+    // Onto the highest surface cell under its centre, then smoothing spreads it.
+    SnowSurface* best = nullptr;
+    std::size_t cell = 0;
+    world_.each<SnowSurface>([&](Entity, SnowSurface& s) {
+        std::uint32_t ix = 0, iz = 0;
+        if (s.cell_at(b.position.x, b.position.z, ix, iz) && !s.is_void(s.index(ix, iz)) &&
+            (best == nullptr || s.level(s.index(ix, iz)) > best->level(cell))) {
+            best = &s;
+            cell = s.index(ix, iz);
+        }
+    });
+    if (best == nullptr) {
+        throw SnowError("drop_snowball: no snow surface or cover under the body");
+    }
+    const std::uint64_t room = std::numeric_limits<std::uint32_t>::max() - best->snow[cell];
+    const std::uint64_t units = std::min(b.carried, room);
+    best->snow[cell] += static_cast<std::uint32_t>(units);
+    best->mark_dirty(static_cast<std::uint32_t>(cell % best->nx),
+                     static_cast<std::uint32_t>(cell / best->nx));
+    b.carried -= units;
+    b.radius = snowball_radius(b.bare_radius, b.carried);
+    return units;
 }
 
 Entity Simulation::add_box(const Aabb& box) {
@@ -120,7 +205,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
-    // Flakes meet meshes only through the sky map (seed 004): a mesh needs one.
+    // Flakes meet meshes only through the sky map [SKY]: a mesh needs one.
     auto& versions = world_.resource<SourceVersions>();
     if (!world_.has_resource<OcclusionCamera>()) {
         world_.set_resource<OcclusionCamera>();
@@ -207,6 +292,7 @@ MassReport Simulation::mass() const {
     r.removed = ledger.removed();
     r.airborne = world_.resource<FlakePool>().airborne_units();
     world_.each<SnowSurface>([&](Entity, const SnowSurface& s) { r.settled += s.settled_units(); });
+    world_.each<Body>([&](Entity, const Body& b) { r.carried += b.carried; });
     return r;
 }
 

@@ -6,6 +6,7 @@
 #include "ecs/job_pool.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
+#include "systems/body.hpp"
 #include "systems/colliders.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
@@ -14,6 +15,7 @@
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snapshot.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/source_versions.hpp"
 #include "systems/spectral_snow.hpp"
@@ -52,6 +54,23 @@ class Simulation {
     /// ground). Flakes reaching an owner's top are kept only where one of its
     /// surfaces covers that point.
     Entity add_surface(const SurfaceDef& def, Entity owner = null_entity);
+    /// A snow cover over a rectangle: snow lies on whatever geometry is under
+    /// it (its base follows the highest geometry of each column, rebuilt at
+    /// the start of a tick after geometry changed). Columns whose top is a
+    /// declared surface stay with that surface.
+    Entity add_cover(const CoverDef& def);
+    /// A moving body (sphere, box, upright capsule): pushes flakes aside,
+    /// carves trails through snow, a snowball picks snow up. Not part of
+    /// the static geometry (no sky map or cover rebuild when it moves).
+    Entity add_body(const BodyDef& def);
+    /// Where body `e` is next tick (swept from where it is now).
+    void move_body(Entity e, const glm::vec3& position);
+    /// Velocity (m/s) of a body without a path or a move_body target.
+    void set_body_velocity(Entity e, const glm::vec3& velocity);
+    /// A scripted path for body `e`, from its first waypoint on.
+    void set_body_motion(Entity e, const BodyMotion& motion);
+    /// Puts a snowball's snow back on the cell under it; returns the units.
+    std::uint64_t drop_snowball(Entity e);
     Entity add_box(const Aabb& box);
     Entity add_sphere(const glm::vec3& center, float radius);
     /// A triangle mesh (3 vertices each). Adds a default OcclusionCamera if
@@ -99,6 +118,7 @@ class Simulation {
 
   private:
     void build_schedule();
+    Body& body_for(Entity e, const char* call);
 
     /// state_hash()'s digest of the sources, recomputed when their versions
     /// change (so state_hash() must not run on two threads at once).

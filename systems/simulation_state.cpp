@@ -1,14 +1,19 @@
 // The Simulation's state as a whole: what state_hash() covers and what
 // save()/restore() carry. A tick changes the clock, the ledger, the counters,
 // the flake pool, the wind, the surfaces' snow (and the cells waiting for
-// smoothing) and the occlusion map; everything else is source data
-// (source_versions.hpp), hashed but not saved, or a cache rebuilt from it.
+// smoothing), each cover's base (it follows the geometry, in as many ticks as
+// the flake pool allows), the bodies and the occlusion map; everything else is
+// source data (source_versions.hpp), hashed but not saved, or a cache rebuilt
+// from it.
 #include "systems/simulation.hpp"
 
 #include "ecs/state_hash.hpp"
 
 #include <algorithm>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace snow {
 
@@ -42,7 +47,7 @@ void hash_ledger(StateHasher& h, const MassLedger& l) {
 
 void hash_counters(StateHasher& h, const SimCounters& c) {
     for (const std::uint64_t v : {c.stiff_flake_ticks, c.landed, c.rolled, c.smoothing_iterations,
-                                  c.spilled_units, c.occlusion_refreshes}) {
+                                  c.spilled_units, c.occlusion_refreshes, c.carved_units}) {
         h.value(v);
     }
 }
@@ -107,6 +112,49 @@ void hash_snow(StateHasher& h, const World& w) {
     });
 }
 
+/// A cover's base is state: it follows the geometry only as far as the flake
+/// pool takes the snow it sheds, so it is hashed whole (the placement and
+/// settings are in source_digest). Its column tops are a pure function of the
+/// sources while it is current, so they are hashed only while it is stale;
+/// its closed edges and drop cells are functions of those two.
+void hash_covers(StateHasher& h, const World& w) {
+    const SourceVersions versions = source_versions(w);
+    w.each<SnowCover>([&](Entity e, const SnowCover& c) {
+        h.value(e.bits);
+        h.span(std::span<const std::int64_t>(w.get<SnowSurface>(e).base_level));
+        const bool stale = !c.current(versions);
+        h.value(stale);
+        if (stale) {
+            h.span(std::span<const float>(c.column_top));
+        }
+    });
+}
+
+/// Every field of every body: the pose and path progress ticks change, and
+/// the shape, velocity, target and path the host sets.
+void hash_bodies(StateHasher& h, const World& w) {
+    h.value(static_cast<std::uint64_t>(w.count<Body>()));
+    w.each<Body>([&](Entity e, const Body& b) {
+        h.value(e.bits);
+        h.value(b.shape);
+        for (const float v : {b.radius, b.half_height, b.bare_radius, b.along, b.motion.speed}) {
+            h.value(v);
+        }
+        for (const glm::vec3& v : {b.half_extents, b.position, b.previous, b.velocity, b.target}) {
+            hash_vec3(h, v);
+        }
+        for (const bool v : {b.on_ground, b.snowball, b.has_target, b.motion.loop}) {
+            h.value(v);
+        }
+        h.value(static_cast<std::uint64_t>(b.motion.waypoints.size()));
+        for (const glm::vec3& v : b.motion.waypoints) {
+            hash_vec3(h, v);
+        }
+        h.value(b.segment);
+        h.value(b.carried);
+    });
+}
+
 /// The camera, and the map where it is not a pure function of hashed state:
 /// its lean (held with hysteresis) always, its texels while it is stale.
 void hash_occlusion(StateHasher& h, const World& w) {
@@ -138,7 +186,8 @@ void hash_occlusion(StateHasher& h, const World& w) {
     }
 }
 
-/// The source data: colliders, surface placement and owners.
+/// The source data: colliders, surface placement and owners, cover settings
+/// (a cover's base is state: hash_covers).
 std::uint64_t source_digest(const World& w) {
     StateHasher h;
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) {
@@ -166,12 +215,33 @@ std::uint64_t source_digest(const World& w) {
         h.value(s.nx);
         h.value(s.nz);
         h.value(s.unit_height);
-        h.span(std::span<const std::int64_t>(s.base_level));
+        const auto* cover = w.try_get<SnowCover>(e);
+        h.value(cover != nullptr ? cover->drop_limit : -1.0f);
+        if (cover == nullptr) {
+            h.span(std::span<const std::int64_t>(s.base_level));
+        }
         h.value(s.edge_limit_units);
         h.value(s.laplacian_limit_units);
+        h.value(s.talus_units);
         h.value(s.spills);
     });
     return h.digest();
+}
+
+/// Throws, before restore() changes anything, unless the world holds a
+/// component T on exactly the entities the snapshot saved one for.
+template <typename T>
+void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& saved,
+                   const std::string& what) {
+    if (saved.size() != w.count<T>()) {
+        throw SnowError("restore: snapshot belongs to a different scene (" + what + " count)");
+    }
+    for (const auto& [e, component] : saved) {
+        if (!w.has<T>(e)) {
+            throw SnowError("restore: snapshot belongs to a different scene (" + what +
+                            " missing)");
+        }
+    }
 }
 
 } // namespace
@@ -186,6 +256,8 @@ std::uint64_t Simulation::state_hash() const {
     hash_wind(h, world_.try_resource<Wind>());
     hash_emitters(h, world_);
     hash_snow(h, world_);
+    hash_covers(h, world_);
+    hash_bodies(h, world_);
     hash_occlusion(h, world_);
     const SourceVersions versions = source_versions(world_);
     if (!source_digest_.valid || source_digest_.of != versions) {
@@ -209,6 +281,8 @@ std::unique_ptr<Snapshot> Simulation::save() const {
     }
     world_.each<SnowSurface>(
         [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
+    world_.each<SnowCover>([&](Entity e, const SnowCover& c) { s->covers.emplace_back(e, c); });
+    world_.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
     return s;
 }
 
@@ -216,14 +290,9 @@ void Simulation::restore(const Snapshot& s) {
     if (s.flakes.capacity() != world_.resource<FlakePool>().capacity()) {
         throw SnowError("restore: snapshot belongs to a different scene (flake capacity)");
     }
-    if (s.surfaces.size() != world_.count<SnowSurface>()) {
-        throw SnowError("restore: snapshot belongs to a different scene (surface count)");
-    }
-    for (const auto& [e, surf] : s.surfaces) {
-        if (!world_.has<SnowSurface>(e)) {
-            throw SnowError("restore: snapshot belongs to a different scene (surface missing)");
-        }
-    }
+    same_entities(world_, s.surfaces, "surface");
+    same_entities(world_, s.covers, "cover");
+    same_entities(world_, s.bodies, "body");
     FlakePool& pool = world_.resource<FlakePool>();
     pool = s.flakes;
     pool.free_stack.reserve(pool.capacity()); // keep release() allocation-free
@@ -249,7 +318,19 @@ void Simulation::restore(const Snapshot& s) {
         map->version = std::max(seen, s.sky_map ? s.sky_map->version : 0) + 1;
     }
     for (const auto& [e, surf] : s.surfaces) {
-        world_.get<SnowSurface>(e) = surf;
+        SnowSurface& now = world_.get<SnowSurface>(e);
+        // A cover's base may differ from the saved one: then its version moves
+        // on past both (it never goes back), so no cache of it matches by accident.
+        const std::uint64_t seen = now.base_version;
+        const bool same_base = now.base_level == surf.base_level;
+        now = surf;
+        now.base_version = same_base ? seen : std::max(seen, surf.base_version) + 1;
+    }
+    for (const auto& [e, cover] : s.covers) {
+        world_.get<SnowCover>(e) = cover;
+    }
+    for (const auto& [e, body] : s.bodies) {
+        world_.get<Body>(e) = body;
     }
 }
 

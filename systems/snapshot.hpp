@@ -3,10 +3,12 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "systems/body.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
@@ -29,6 +31,10 @@ struct Snapshot {
     std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
     /// Snow and pending smoothing of every surface, by entity.
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
+    /// What each cover's base was built from and its drop cells, by entity.
+    std::vector<std::pair<Entity, SnowCover>> covers;
+    /// Pose, path progress and carried snow of every body, by entity.
+    std::vector<std::pair<Entity, Body>> bodies;
 };
 
 } // namespace snow

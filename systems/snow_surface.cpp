@@ -88,7 +88,7 @@ SnowSurface make_surface(const SurfaceDef& def, std::string& error) {
     const double edge = std::round(def.edge_limit / unit_height);
     s.edge_limit_units = static_cast<std::uint32_t>(
         std::min(edge, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
-    // seed 002 §3: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
+    // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
     const double lap = std::round(def.laplacian_limit * cell * cell / unit_height);
     s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_surface_level));
     return s;

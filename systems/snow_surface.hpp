@@ -1,6 +1,6 @@
 /// @file snow_surface.hpp
-/// @brief A heightfield of settled snow over the top of an object (seed 002 §1,
-/// seed 003 §IV). Several may exist per object; cells count whole mass units.
+/// @brief A heightfield of settled snow over the top of an object ([WF §1],
+/// [ZCL §IV]). Several may exist per object; cells count whole mass units.
 #pragma once
 
 #include "ecs/entity.hpp"
@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct SurfaceDef {
     float slope_z = 0.0f;               ///< d(base)/dz
     float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
     bool spills = true;                 ///< false for the ground: its edges keep their snow
-    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), seed 002 §3
+    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
 };
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
@@ -60,6 +61,14 @@ struct CellBox {
     }
 };
 
+/// Base level of a cell with nothing under it (a cover's column that lies
+/// outside all geometry or under a declared surface): it never catches a
+/// flake and its edges are closed, so no snow ever reaches it.
+inline constexpr std::int64_t void_level = std::numeric_limits<std::int64_t>::min() / 4;
+
+/// Bits of SnowSurface::closed: edge towards -x, +x, -z, +z.
+inline constexpr std::uint8_t closed_all = 0xF;
+
 /// Component. Heights are compared as integer "levels" in units of
 /// `unit_height`, so rolling and smoothing are exact and order-free.
 struct SnowSurface {
@@ -70,7 +79,17 @@ struct SnowSurface {
     std::vector<std::uint32_t> snow;      ///< settled units per cell (row-major, x fastest)
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
+    /// Largest stable height step (levels) to a neighbour, the angle of
+    /// repose over one cell: steeper snow slides down. 0 = no such rule (a
+    /// declared rectangle, whose own slope is given).
+    std::int64_t talus_units = 0;
     bool spills = true;
+    /// Per cell, the edges no snow crosses (closed_all bits): a cover closes
+    /// the edges at drops of its base and around void cells. Empty for a
+    /// plain rectangle, whose cells are all open to each other.
+    std::vector<std::uint8_t> closed;
+    /// Bumped whenever base_level changes (a cover following its geometry).
+    std::uint64_t base_version = 0;
     // Dirty rectangle (inclusive cell bounds): the bounding box of every cell
     // waiting for redistribution; empty when lo > hi.
     std::uint32_t dirty_x0 = 1, dirty_z0 = 1, dirty_x1 = 0, dirty_z1 = 0;
@@ -116,23 +135,27 @@ struct SnowSurface {
     [[nodiscard]] bool dirty_empty() const { return dirty_x0 > dirty_x1 || dirty_z0 > dirty_z1; }
     /// Indices of the existing 4-neighbours of (ix, iz), in the order -x, +x, -z, +z
     /// (cells off the grid are left out); returns how many were written.
+    /// Closed edges (SnowSurface::closed) are left out too.
     std::uint32_t neighbours(std::uint32_t ix, std::uint32_t iz, std::size_t (&out)[4]) const {
         const std::size_t i = index(ix, iz);
+        const std::uint8_t shut = closed.empty() ? 0 : closed[i];
         std::uint32_t n = 0;
-        if (ix > 0) {
+        if (ix > 0 && (shut & 1u) == 0) {
             out[n++] = i - 1;
         }
-        if (ix + 1 < nx) {
+        if (ix + 1 < nx && (shut & 2u) == 0) {
             out[n++] = i + 1;
         }
-        if (iz > 0) {
+        if (iz > 0 && (shut & 4u) == 0) {
             out[n++] = i - nx;
         }
-        if (iz + 1 < nz) {
+        if (iz + 1 < nz && (shut & 8u) == 0) {
             out[n++] = i + nx;
         }
         return n;
     }
+    /// No geometry under cell i: it holds no snow and catches nothing.
+    [[nodiscard]] bool is_void(std::size_t i) const { return base_level[i] == void_level; }
     [[nodiscard]] std::uint64_t settled_units() const;
 };
 

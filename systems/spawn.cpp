@@ -1,10 +1,11 @@
-// spawn: inactive flakes activate (seed 002 §4) on the top and upwind sides
-// of the simulation bounds (seed 002 §5), with mass, size and fall speed drawn
+// spawn: inactive flakes activate [WF §4] on the top and upwind sides
+// of the simulation bounds [WF §5], with mass, size and fall speed drawn
 // from the emitter. Every draw is keyed by (seed, tick, slot, stream).
 #include "ecs/rng.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
@@ -101,7 +102,7 @@ void spawn_system(World& w) {
     const Aabb region = spawn_region(w, cfg.bounds);
     std::uint32_t emitter_index = 0;
     w.each<Emitter>([&](Entity, const Emitter& em) {
-        const RngKey count_key{cfg.seed, tick, emitter_index++, Stream::spawn_activate};
+        const RngKey count_key{cfg.seed, tick, emitter_index++, random_stream::spawn_activate};
         // floor(rate·dt + u): the expected count per tick, exactly on average.
         const double expected = static_cast<double>(em.rate) * cfg.dt;
         auto n = static_cast<std::uint64_t>(expected + rng_uniform(count_key));
@@ -112,7 +113,7 @@ void spawn_system(World& w) {
             if (!pool.acquire(slot)) {
                 return; // pool full: the limit holds without allocating
             }
-            const RngKey k{cfg.seed, tick, slot, Stream::spawn_position};
+            const RngKey k{cfg.seed, tick, slot, random_stream::spawn_position};
             float pick = rng_uniform(k, 0) * faces.total;
             int face = 0;
             while (face < 4 && pick >= faces.w[face]) {
@@ -120,13 +121,13 @@ void spawn_system(World& w) {
                 ++face;
             }
             const glm::vec3 p = point_on_face(region, face, rng_uniform(k, 1), rng_uniform(k, 2));
-            const float u_mass = rng_uniform({cfg.seed, tick, slot, Stream::spawn_mass});
+            const float u_mass = rng_uniform({cfg.seed, tick, slot, random_stream::spawn_mass});
             const float mass_g = log_uniform(em.mass_min_g, em.mass_max_g, u_mass);
             const auto units = static_cast<std::uint32_t>(
                 std::clamp(std::lround(mass_g / (unit_kg * 1000.0)), 1l, long{max_flake_units}));
             // Bigger flakes are heavier: size follows mass through the same draw.
             const float size = em.size_min + (em.size_max - em.size_min) * u_mass;
-            const float fall = rng_range({cfg.seed, tick, slot, Stream::spawn_velocity}, 0,
+            const float fall = rng_range({cfg.seed, tick, slot, random_stream::spawn_velocity}, 0,
                                          em.fall_speed_min, em.fall_speed_max);
             pool.px[slot] = p.x;
             pool.py[slot] = p.y;

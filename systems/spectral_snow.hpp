@@ -1,5 +1,5 @@
 /// @file spectral_snow.hpp
-/// @brief Settings of the far-field spectral snow layer (seed 000).
+/// @brief Settings of the far-field spectral snow layer [LZ].
 #pragma once
 
 #include <cstdint>

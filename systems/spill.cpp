@@ -1,66 +1,74 @@
-// spill: seed 002 §3, "if too much snow accumulates on the edge of a height
+// spill: [WF §3], "if too much snow accumulates on the edge of a height
 // field, snow is emitted into the scene". Excess over the edge limit leaves a
 // border cell as new flakes just outside the surface; they fall through the
-// normal pipeline onto whatever lies below (a porch roof, the ground).
-#include "systems/emitter.hpp"
-#include "systems/flake_pool.hpp"
-#include "systems/sim_config.hpp"
+// normal pipeline onto whatever lies below (a porch roof, the ground). A
+// cover's edges are also inside it: where its base drops by more than its
+// drop limit (eaves, a statue's shoulder, a table edge).
+#include "systems/shed.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
-#include "systems/units.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace snow {
 
 namespace {
 
-/// Diameter (m) of a spilled clump, for rendering.
-constexpr float spill_flake_size = 0.01f;
-
-struct SpillFlake {
-    float x, y, z;  ///< where new flakes appear
-    float k_over_m; ///< drag of new flakes
-};
-
-/// Sheds the excess of border cell (ix, iz) as flakes of at most
-/// max_flake_units each. Stops, keeping the rest on the edge, when the pool is full.
-void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool,
-          const SpillFlake& proto, SimCounters& counters) {
+/// Sheds the excess of cell (ix, iz) over the edge limit as clumps starting
+/// at `at`; stops, keeping the rest on the edge, when the pool is full.
+void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool, const ClumpStart& at,
+          SimCounters& counters) {
     std::uint32_t& cell = s.snow[s.index(ix, iz)];
-    const std::uint32_t before = cell;
-    std::uint32_t left = cell - s.edge_limit_units;
-    while (left > 0) {
-        std::uint32_t slot = 0;
-        if (!pool.acquire(slot)) {
-            break;
-        }
-        const std::uint32_t m = std::min(left, max_flake_units);
-        pool.px[slot] = proto.x;
-        pool.py[slot] = proto.y;
-        pool.pz[slot] = proto.z;
-        pool.vx[slot] = pool.vy[slot] = pool.vz[slot] = 0.0f;
-        pool.k_over_m[slot] = proto.k_over_m;
-        pool.size[slot] = spill_flake_size;
-        pool.mass_units[slot] = m; // settled -> airborne: the ledger total is unchanged
-        cell -= m;
-        left -= m;
-        counters.spilled_units += m;
-    }
-    if (cell != before) {
+    const std::uint32_t gone = shed_units(pool, cell - s.edge_limit_units, at);
+    cell -= gone;
+    counters.spilled_units += gone;
+    if (gone != 0) {
         s.mark_dirty(ix, iz); // redistribution refills the edge from inside
     }
 }
 
-/// Centre of cell (ix, iz) moved one cell outward across each border it
-/// touches: half a cell beyond the edge, so the flake is off this surface.
-SpillFlake spill_point(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, float k_over_m) {
-    const double ox = ix == 0 ? -1.0 : (ix + 1 == s.nx ? 1.0 : 0.0);
-    const double oz = iz == 0 ? -1.0 : (iz + 1 == s.nz ? 1.0 : 0.0);
+/// Centre of cell (ix, iz) moved one cell by (ox, oz): half a cell beyond the
+/// edge it crosses, at the cell's snow top.
+ClumpStart beyond(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, double ox, double oz,
+                  float k_over_m) {
     const double cell = s.cell;
-    return {static_cast<float>(s.x0 + (ix + 0.5 + ox) * cell), s.top_y(s.index(ix, iz)),
-            static_cast<float>(s.z0 + (iz + 0.5 + oz) * cell), k_over_m};
+    return {{static_cast<float>(s.x0 + (ix + 0.5 + ox) * cell), s.top_y(s.index(ix, iz)),
+             static_cast<float>(s.z0 + (iz + 0.5 + oz) * cell)},
+            k_over_m};
+}
+
+/// Border cells in index order: first row, the two ends of middle rows, last
+/// row; each sheds outward across every border it touches.
+void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& counters) {
+    const std::uint32_t limit = s.edge_limit_units;
+    for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
+        const bool full_row = iz == 0 || iz + 1 == s.nz;
+        const std::uint32_t step = full_row ? 1 : std::max(s.nx - 1, 1u);
+        for (std::uint32_t ix = 0; ix < s.nx; ix += step) {
+            if (s.snow[s.index(ix, iz)] > limit) {
+                const double ox = ix == 0 ? -1.0 : (ix + 1 == s.nx ? 1.0 : 0.0);
+                const double oz = iz == 0 ? -1.0 : (iz + 1 == s.nz ? 1.0 : 0.0);
+                shed(s, ix, iz, pool, beyond(s, ix, iz, ox, oz, k_over_m), counters);
+            }
+        }
+    }
+}
+
+/// A cover's drop cells, ascending: each sheds across its drop edge.
+void spill_drops(SnowSurface& s, const SnowCover& cover, FlakePool& pool, float k_over_m,
+                 SimCounters& counters) {
+    static constexpr double off_x[4] = {-1.0, 1.0, 0.0, 0.0};
+    static constexpr double off_z[4] = {0.0, 0.0, -1.0, 1.0};
+    for (std::size_t k = 0; k < cover.edge_cells.size(); ++k) {
+        const std::uint32_t c = cover.edge_cells[k];
+        if (s.snow[c] > s.edge_limit_units) {
+            const std::uint8_t side = cover.edge_side[k];
+            const auto ix = static_cast<std::uint32_t>(c % s.nx);
+            const auto iz = static_cast<std::uint32_t>(c / s.nx);
+            shed(s, ix, iz, pool, beyond(s, ix, iz, off_x[side], off_z[side], k_over_m), counters);
+        }
+    }
 }
 
 } // namespace
@@ -68,29 +76,16 @@ SpillFlake spill_point(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz,
 void spill_system(World& w) {
     auto& pool = w.resource<FlakePool>();
     auto& counters = w.resource<SimCounters>();
-    // Drag from the emitter's mean fall speed (terminal speed g·m/k), else 1 m/s.
-    const float g = std::abs(w.resource<SimConfig>().gravity.y);
-    float fall = 1.0f;
-    if (const auto* emitters = w.find_pool<Emitter>(); emitters && emitters->size() > 0) {
-        const Emitter& e = emitters->components().front();
-        fall = 0.5f * (e.fall_speed_min + e.fall_speed_max);
-    }
-    const float k_over_m = g / fall;
-
-    for (SnowSurface& s : w.pool<SnowSurface>().components()) {
-        if (!s.spills) {
-            continue;
+    const float k_over_m = clump_drag(w);
+    const auto* covers = w.find_pool<SnowCover>();
+    auto& surfaces = w.pool<SnowSurface>();
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        SnowSurface& s = surfaces.components()[i];
+        if (s.spills) {
+            spill_border(s, pool, k_over_m, counters);
         }
-        const std::uint32_t limit = s.edge_limit_units;
-        // Border cells in index order: first row, the two ends of middle rows, last row.
-        for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
-            const bool full_row = iz == 0 || iz + 1 == s.nz;
-            const std::uint32_t step = full_row ? 1 : std::max(s.nx - 1, 1u);
-            for (std::uint32_t ix = 0; ix < s.nx; ix += step) {
-                if (s.snow[s.index(ix, iz)] > limit) {
-                    shed(s, ix, iz, pool, spill_point(s, ix, iz, k_over_m), counters);
-                }
-            }
+        if (const SnowCover* cover = covers ? covers->find(surfaces.entities()[i]) : nullptr) {
+            spill_drops(s, *cover, pool, k_over_m, counters);
         }
     }
 }

@@ -6,7 +6,7 @@
 
 namespace snow {
 
-/// One mass unit is 0.005 g, the lightest flake of seed 002 §3; the heaviest
+/// One mass unit is 0.005 g, the lightest flake of [WF §3]; the heaviest
 /// (5 g) is 1000 units. Flakes and surface cells both count whole units.
 inline constexpr double unit_kg = 5.0e-6;
 inline constexpr std::uint32_t max_flake_units = 1000;

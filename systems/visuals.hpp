@@ -20,7 +20,7 @@ struct MeshRenderable {
     glm::vec3 color{0.6f, 0.6f, 0.6f};
 };
 
-/// Component: a coloured point light (seed 002 §5 uses three).
+/// Component: a coloured point light ([WF §5] uses three).
 struct PointLight {
     glm::vec3 position{0.0f, 5.0f, 0.0f};
     glm::vec3 color{1.0f, 1.0f, 1.0f};

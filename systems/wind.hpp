@@ -1,5 +1,5 @@
 /// @file wind.hpp
-/// @brief One global wind vector with a bounded random walk (seed 002 §6).
+/// @brief One global wind vector with a bounded random walk [WF §6].
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,6 +1,7 @@
 // wind: one global vector doing a bounded random walk around its base
-// (seed 002 §6 "allowed to change by small random amounts"), plus optional gusts.
+// ([WF §6] "allowed to change by small random amounts"), plus optional gusts.
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
@@ -13,7 +14,7 @@ void wind_system(World& w) {
     const auto& cfg = w.resource<SimConfig>();
     const std::uint64_t tick = w.resource<SimClock>().tick;
     Wind& wind = w.resource<Wind>();
-    const RngKey walk_key{cfg.seed, tick, 0, Stream::wind_walk};
+    const RngKey walk_key{cfg.seed, tick, 0, random_stream::wind_walk};
 
     glm::vec3 dev = wind.deviation;
     const float base_speed = std::sqrt(wind.base.x * wind.base.x + wind.base.z * wind.base.z);
@@ -33,7 +34,7 @@ void wind_system(World& w) {
 
     float gust = 0.0f;
     if (wind.gust_strength > 0.0f) {
-        const RngKey gust_key{cfg.seed, tick, 0, Stream::wind_gust};
+        const RngKey gust_key{cfg.seed, tick, 0, random_stream::wind_gust};
         if (wind.gust_left <= 0.0f && rng_uniform(gust_key) < wind.gust_rate * cfg.dt) {
             wind.gust_left = wind.gust_duration;
         }

@@ -23,7 +23,7 @@ layout(std140) uniform Frame {
 };
 
 // Diffuse light arriving at p with normal n: ambient, the point lights
-// (seed 002 §5: three coloured lights) with a soft 1/(1 + k d^2) falloff, the sun.
+// ([WF §5]: three coloured lights) with a soft 1/(1 + k d^2) falloff, the sun.
 vec3 irradiance(vec3 n, vec3 p) {
     // Hemispheric sky light: an overcast sky lights what faces up the most.
     vec3 light = ambient.rgb + sky.rgb * (0.35 * (0.5 + 0.5 * n.y)) +
@@ -39,17 +39,17 @@ vec3 irradiance(vec3 n, vec3 p) {
 
 #ifdef FOG
 #if defined(FOG_EXPONENTIAL)
-// seed 004: fogFactor = e^(-density * z), z taken as the distance to the eye
+// [SKY]: fogFactor = e^(-density * z), z taken as the distance to the eye
 float fog_transmittance(vec3 p) {
     return exp(-fog_color.w * distance(p, camera_pos.xyz));
 }
 #elif defined(FOG_HALF_LIFE)
-// seed 001: light is halved every D metres, 0.5^(d/D)
+// [PE]: light is halved every D metres, 0.5^(d/D)
 float fog_transmittance(vec3 p) {
     return exp2(-distance(p, camera_pos.xyz) * fog_color.w);
 }
 #elif defined(FOG_LAYERED)
-// seed 001 layered mist: texel i holds (E(y_i), density(y_i)), E the integral
+// [PE] layered mist: texel i holds (E(y_i), density(y_i)), E the integral
 // of the density from below the layer; interpolated exactly with texelFetch.
 uniform sampler1D fog_table;
 vec2 fog_lookup(float y) {

@@ -1,4 +1,4 @@
-// flake.vert: one point sprite per flake (seed 003), sized by perspective.
+// flake.vert: one point sprite per flake [ZCL], sized by perspective.
 layout(location = 0) in vec4 a_flake; // xyz: position, w: drawn diameter (m)
 out vec4 v_color;
 void main() {
@@ -8,7 +8,7 @@ void main() {
     float size = clamp(px, flake.x, flake.y);
     gl_PointSize = size;
     // A sprite enlarged to the minimum size keeps its true coverage; farther
-    // flakes fade further (seed 004: "further points are more translucent").
+    // flakes fade further ([SKY]: "further points are more translucent").
     float coverage = min(1.0, (px * px) / (size * size));
     float alpha = flake.z * coverage * exp(-distance(p, camera_pos.xyz) * flake.w);
     // Ice scatters light from every side: flakes stay bright away from the lamps.

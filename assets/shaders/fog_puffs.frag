@@ -1,4 +1,4 @@
-// fog_puffs.frag: Gaussian and Gabor fog puffs of seed 001 with analytic line
+// fog_puffs.frag: Gaussian and Gabor fog puffs of [PE] with analytic line
 // integrals: render/fog_puffs.cpp's formulas in float. Drawn with sky.vert over
 // the finished frame: transparency 0.5^(optical depth eye → surface).
 // PUFF_PROBE: one fragment per test segment instead (shader_puff_optical_depths).
@@ -63,7 +63,7 @@ vec2 puff_erf_scaled(float x, float y_signed) {
     return y_signed < 0.0 ? vec2(w.x, -w.y) : w;
 }
 
-// ∫ density of puff i along a + s·dir, 0 ≤ s ≤ len: a Gaussian in s (seed 001),
+// ∫ density of puff i along a + s·dir, 0 ≤ s ≤ len: a Gaussian in s [PE],
 // times (1 + cos(κs + θ))/2 for a Gabor puff.
 float puff_line_integral(int i, vec3 a, vec3 dir, float len) {
     float sigma = puff_shape[i].w;

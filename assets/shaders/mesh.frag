@@ -1,4 +1,4 @@
-// mesh.frag: lit scene meshes, whitened where snow reaches them (seed 004):
+// mesh.frag: lit scene meshes, whitened where snow reaches them [SKY]:
 // incline coefficient dot(N, up) times exposure to the sky from the occlusion map.
 in vec3 v_world;
 in vec3 v_normal;
@@ -13,7 +13,7 @@ float exposed(ivec2 t, float y) {
     }
     return y >= texelFetch(occlusion_map, t, 0).r - occlusion.w ? 1.0 : 0.0;
 }
-// Like a shadow-map test (seed 004 step 2), filtered over the 4 nearest texels.
+// Like a shadow-map test [SKY step 2], filtered over the 4 nearest texels.
 float sky_exposure(vec3 p) {
     vec2 t = (p.xz + occlusion_shear.xy * p.y - occlusion.xy) * occlusion.z - 0.5;
     ivec2 i = ivec2(floor(t));
@@ -30,7 +30,7 @@ float sky_exposure(vec3 p) { return 1.0; }
 
 void main() {
     vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
-    float incline = clamp(n.y, 0.0, 1.0); // seed 004 step 3
+    float incline = clamp(n.y, 0.0, 1.0); // [SKY step 3]
     float cover = incline * sky_exposure(v_world) * snow_color.w;
     vec3 color = mix(albedo, snow_color.rgb, cover) * irradiance(n, v_world);
 #ifdef FOG

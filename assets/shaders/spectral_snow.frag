@@ -1,4 +1,4 @@
-// spectral_snow.frag: far-field snow of seed 000 composited over the scene
+// spectral_snow.frag: far-field snow of [LZ] composited over the scene
 // behind the particle flakes, I = I_snow·α + (1 − α)·I_background. Drawn with
 // spectral_snow.vert (one screen-covering triangle) and alpha blending.
 in vec2 v_ndc;
@@ -27,7 +27,7 @@ void main() {
     vec2 uv = vec2(atan(dir.x, -dir.z), asin(clamp(dir.y, -1.0, 1.0))) * spectral_view.x;
     uv.x += spectral_view.y * uv.y;
     float alpha = texture(spectral_volume, vec3(uv, spectral_view.z)).r;
-    // Seed 000 composites a constant snow intensity; the fog in front of the
+    // [LZ] composites a constant snow intensity; the fog in front of the
     // layer's full-strength depth still veils it.
     vec3 color = snow_color.rgb;
 #ifdef FOG

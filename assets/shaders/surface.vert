@@ -1,4 +1,4 @@
-// surface.vert: snow heightfields and their aprons (seed 002 §6).
+// surface.vert: snow heightfields and their aprons [WF §6].
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in float a_depth;

@@ -1,7 +1,7 @@
 #include "bench/accuracy/scene_run.hpp"
 
 #include "bench/accuracy/cpu_clock.hpp"
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
 /// @file trajectory_study.hpp
 /// @brief Part 1 of the accuracy study: flakes released from rest into a
-/// constant wind (what a spilled flake does, seed 002 §3 drag), stepped by the
+/// constant wind (what a spilled flake does, [WF §3] drag), stepped by the
 /// real SoA integrate system, against the closed-form solution.
 #pragma once
 

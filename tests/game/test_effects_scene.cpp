@@ -1,7 +1,7 @@
-// The village with the effects of seeds 000 and 001 (assets/scenes/
+// The village with the effects of [LZ] and [PE] (assets/scenes/
 // village_effects.gltf: spectral far-field snow, layered fog with a puff):
 // rendered headless from the scene file, and the plain village draws neither.
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 #include "render/renderer.hpp"
 #include "tests/render/render_fixture.hpp"
 

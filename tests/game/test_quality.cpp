@@ -3,7 +3,7 @@
 // the user gave no value, loadable with every project scene, and bad override
 // values rejected naming the field.
 #include "game/quality.hpp"
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 
 #include <gtest/gtest.h>
 

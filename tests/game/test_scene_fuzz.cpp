@@ -1,9 +1,10 @@
 // Fuzz-style robustness of the scene loader (OSS-Fuzz habit, deterministic):
-// hundreds of fixed-seed mutations of the village scene (byte flips,
-// truncations, swapped values, deleted characters) must each give either a
-// working simulation or one clean error, never a crash. CI runs this under
+// hundreds of fixed-seed mutations of the village scene, as .gltf (byte
+// flips, truncations, swapped values, deleted characters) and as .glb (lying
+// header and chunk fields, flipped bytes, truncations), must each give either
+// a working simulation or one clean error, never a crash. CI runs this under
 // ASan + UBSan (SNOW_SANITIZE), which turns any out-of-range read into a failure.
-#include "game/scene_loader.hpp"
+#include "tests/game/scene_test_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -59,12 +61,13 @@ std::vector<std::pair<std::size_t, std::size_t>> number_tokens(const std::string
     return out;
 }
 
-/// Loads one mutated text; returns true if it loaded. A loaded scene must tick.
-bool load_one(const std::string& text, std::size_t case_id) {
-    const SceneLoadResult r = load_scene_memory(text, "fuzz.gltf");
+/// Loads one mutated file; returns true if it loaded. A loaded scene must tick.
+bool load_one(const std::string& bytes, std::size_t case_id,
+              const std::string& name = "fuzz.gltf") {
+    const SceneLoadResult r = load_scene_memory(bytes, name);
     EXPECT_NE(r.sim == nullptr, r.error.empty()) << "case " << case_id << ": " << r.error;
     if (r.sim == nullptr) {
-        EXPECT_EQ(r.error.rfind("fuzz.gltf: ", 0), 0u) << "case " << case_id << ": " << r.error;
+        EXPECT_EQ(r.error.rfind(name + ": ", 0), 0u) << "case " << case_id << ": " << r.error;
         return false;
     }
     r.sim->run(2);
@@ -137,6 +140,66 @@ TEST(SceneFuzz, VillageMutationsLoadOrFailCleanly) {
     EXPECT_GT(rejected, 100u);
     EXPECT_GT(loaded, 20u);
     std::printf("[ scene fuzz ] %zu cases: %zu loaded, %zu rejected cleanly\n", cases, loaded,
+                rejected);
+}
+
+TEST(SceneFuzz, GlbMutationsLoadOrFailCleanly) {
+    const std::string base = test::gltf_to_glb(village_text());
+    ASSERT_TRUE(load_one(base, 0, "fuzz.glb"));
+    const auto u32_at = [&](std::size_t at) {
+        std::uint32_t v = 0;
+        std::memcpy(&v, base.data() + at, sizeof v);
+        return v;
+    };
+    const std::size_t json_length = u32_at(12);
+    const std::size_t bin_header = 20 + json_length;
+    // The u32 fields of the container: header length, then each chunk's length and type.
+    const std::array<std::size_t, 5> fields{8, 12, 16, bin_header, bin_header + 4};
+    const auto size = static_cast<std::uint32_t>(base.size());
+    const std::array<std::uint32_t, 12> nasty{0,
+                                              1,
+                                              4,
+                                              size - 1,
+                                              size,
+                                              size + 1,
+                                              0x7FFFFFFFu,
+                                              0xFFFFFFFFu,
+                                              static_cast<std::uint32_t>(json_length - 4),
+                                              static_cast<std::uint32_t>(json_length + 4),
+                                              0x4E4F534Au,
+                                              0x004E4942u};
+
+    Mutator rng{2025};
+    std::size_t loaded = 0, rejected = 0, cases = 0;
+    const auto run = [&](const std::string& bytes) {
+        (load_one(bytes, ++cases, "fuzz.glb") ? loaded : rejected) += 1;
+    };
+    for (int i = 0; i < 120; ++i) { // one container field replaced by a hostile value
+        std::string t = base;
+        const std::uint32_t v = nasty[rng.below(nasty.size())];
+        std::memcpy(t.data() + fields[rng.below(fields.size())], &v, sizeof v);
+        run(t);
+    }
+    for (int i = 0; i < 80; ++i) { // a random byte of the 28 container bytes
+        std::string t = base;
+        const std::size_t k = rng.below(28);
+        const std::size_t at = k < 20 ? k : bin_header + (k - 20);
+        t[at] = static_cast<char>(rng.below(256));
+        run(t);
+    }
+    for (int i = 0; i < 60; ++i) { // truncations
+        run(base.substr(0, rng.below(base.size())));
+    }
+    for (int i = 0; i < 120; ++i) { // single bit flips anywhere, half of them in the BIN chunk
+        std::string t = base;
+        const std::size_t at = i % 2 == 0 ? bin_header + 8 + rng.below(base.size() - bin_header - 8)
+                                          : rng.below(base.size());
+        t[at] = static_cast<char>(t[at] ^ (1 << rng.below(8)));
+        run(t);
+    }
+    EXPECT_GT(rejected, 200u);
+    EXPECT_GT(loaded, 20u);
+    std::printf("[ scene fuzz ] %zu .glb cases: %zu loaded, %zu rejected cleanly\n", cases, loaded,
                 rejected);
 }
 

@@ -39,8 +39,9 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
         EXPECT_TRUE(s["calls"].is_number_integer());
         EXPECT_TRUE(s["total_ms"].is_number());
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"spawn", "wind", "integrate", "collide", "deposit",
-                                               "redistribute", "spill", "occlusion"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"cover", "bodies", "spawn", "wind", "integrate",
+                                               "collide", "deposit", "carve", "redistribute",
+                                               "spill", "occlusion"}));
 }
 
 TEST(SnowRunCli, SameHashForOneAndTwoThreads) {

@@ -6,7 +6,7 @@
 // same positions in both yards; an emitter would reuse freed slots in a
 // different order and make the two runs independent draws). Snow per cell can
 // then only differ where a drifted flake fell on the other side of a cell
-// border or rolled (seed 003 rules) over a different neighbour: the
+// border or rolled ([ZCL §IV] rules) over a different neighbour: the
 // tolerances below bound that, and the ledger balances exactly in both.
 #include "hard_case_util.hpp"
 
@@ -180,7 +180,7 @@ TEST(HardCaseFarFromOrigin, YardTenKilometresAwayMatchesTheOriginYard) {
     EXPECT_LT(r.ground.block_rel, 0.25);
     EXPECT_LT(r.roof.block_rel, 0.25);
     // Per cell (12.5 and 10 cm): a centimetre of drift and one tick of landing
-    // time re-draw the roll of seed 003's rules, so up to half the snow may
+    // time re-draw the roll of [ZCL §IV], so up to half the snow may
     // sit in another cell; the same flakes still landed on the same surface.
     EXPECT_LT(r.ground.cell_l1_rel, 0.5);
     EXPECT_LT(r.roof.cell_l1_rel, 0.5);

@@ -2,7 +2,7 @@
 // tick (dt = 0.25 s, so c·dt = 1.6..4.9 for the emitter's fall speeds: past
 // explicit Euler's limit) in still air. Flakes must stay finite, keep their
 // exact mass and land. One landing is 2 cm of snow on a 5 cm ground cell, a
-// Laplacian of 4000 units against the cap of 2500 (seed 002 §3), so every
+// Laplacian of 4000 units against the cap of 2500 [WF §3], so every
 // landing is smoothed; the shed's roof spills clumps cut into <= 1000 units.
 #include "hard_case_util.hpp"
 

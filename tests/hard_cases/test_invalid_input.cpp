@@ -4,7 +4,7 @@
 // field, no Simulation), and snow_run's flags (exit status 2, the flag named).
 #include "hard_case_util.hpp"
 
-#include "game/scene_loader.hpp"
+#include "game/scene/scene_loader.hpp"
 #include "systems/sample_scenes.hpp"
 
 #include <array>

@@ -1,5 +1,5 @@
-// Hard case 4: 100 000 heaviest flakes land on one cell in one tick (seed 002
-// §4/§6 saw smoothing blow up under concentrated landing). 10^8 units (500 m
+// Hard case 4: 100 000 heaviest flakes land on one cell in one tick ([WF §4, §6]
+// saw smoothing blow up under concentrated landing). 10^8 units (500 m
 // of snow on a 10 cm cell) must spread without any cell going negative (an
 // unsigned underflow would show as a cell >= 2^31), above the total, or
 // above the previous maximum, and with the mass exact on every tick.
@@ -10,7 +10,7 @@
 namespace snow {
 namespace {
 
-/// n·h − Σ neighbours of cell (ix, iz), in levels (seed 002 §3's Laplacian).
+/// n·h − Σ neighbours of cell (ix, iz), in levels (the Laplacian of [WF §3]).
 std::int64_t laplacian(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz) {
     std::size_t nb[4];
     const std::uint32_t n = s.neighbours(ix, iz, nb);
@@ -53,7 +53,8 @@ TEST(HardCasePileOnOneCell, HundredThousandFlakesOnOneCellSpreadExactly) {
         st = hard::cell_stats(s);
         ASSERT_EQ(st.wrapped, 0u) << "tick " << ticks;
         ASSERT_EQ(st.sum, total) << "tick " << ticks;
-        // Smoothing is a convex update: no new maximum, ever (RELIABILITY.md).
+        // Smoothing is a convex update: no new maximum, ever
+        // (docs/design.md "Numerical stability").
         ASSERT_LE(st.max, prev_max) << "tick " << ticks;
         prev_max = st.max;
     }
@@ -61,7 +62,7 @@ TEST(HardCasePileOnOneCell, HundredThousandFlakesOnOneCellSpreadExactly) {
     // Spread into a low cone over most of the surface (only the far corners stay bare).
     EXPECT_GE(st.nonzero, s.cell_count() * 3 / 4);
     EXPECT_LT(st.max, total / 50);
-    // At rest the cap of seed 002 §3 holds everywhere.
+    // At rest the cap of [WF §3] holds everywhere.
     for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
         for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
             EXPECT_LE(laplacian(s, ix, iz), s.laplacian_limit_units) << ix << "," << iz;

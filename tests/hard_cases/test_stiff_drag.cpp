@@ -1,7 +1,7 @@
 // Hard case 1: stiff drag. With a = k·dt/m = 50 and 1000 explicit Euler
 // multiplies the gap to terminal velocity by (1 − a) per step (NaN within a
-// few steps, RELIABILITY.md); every integrator must instead stay finite and
-// approach v_t = wind + g/c monotonically (DESIGN.md "Numbers").
+// few steps); every integrator must instead stay finite and approach
+// v_t = wind + g/c monotonically (docs/design.md "Numerical stability").
 #include "hard_case_util.hpp"
 
 #include "systems/integrator.hpp"

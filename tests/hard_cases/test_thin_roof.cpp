@@ -8,6 +8,7 @@
 #include "hard_case_util.hpp"
 
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 
 #include <algorithm>
 
@@ -60,7 +61,7 @@ RoofRun fire_at_thin_roof(Integrator integ, float k_over_m, float floor, std::ui
     // close enough that it is still fast when it reaches the roof.
     const float max_above = std::min(10.0f, 0.8f * 200.0f / k_over_m);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const RngKey k{cfg.seed, 0, i, Stream::test};
+        const RngKey k{cfg.seed, 0, i, random_stream::test};
         // Crossing point well inside the footprint, height above the roof, slant.
         const glm::vec3 cross{rng_range(k, 0, -0.8f, 0.8f), roof_y1, rng_range(k, 1, -0.8f, 0.8f)};
         const float above = rng_range(k, 2, 0.002f, max_above);

@@ -65,7 +65,7 @@ TEST(HardCaseNothing, NoFlakesNoWindNoGravityThousandTicks) {
         EXPECT_EQ(w.current, glm::vec3(0.0f)); // walk 0: the deviation never leaves zero
         EXPECT_NE(s.sim->state_hash(), start); // only the clock moved...
         EXPECT_EQ(s.sim->tick_count(), 1000u);
-        // ... and the systems that need flakes never ran (DESIGN.md: absent effects cost nothing).
+        // ... and the systems that need flakes never ran (docs/design.md "What is declared runs").
         for (const auto& sys : s.sim->schedule().stats()) {
             if (sys.name == "spawn" || sys.name == "integrate" || sys.name == "collide" ||
                 sys.name == "deposit") {

@@ -149,14 +149,14 @@ void build_fixture(FixtureScene& s) {
     s.house_roof = w.create();
     w.add<SnowSurface>(s.house_roof, std::move(roof));
 
-    // Three coloured point lights as in seed 002 §5: white above the house,
+    // Three coloured point lights as in [WF §5]: white above the house,
     // blue toward the camera, yellow to the right.
     w.add<PointLight>(w.create(), PointLight{{-2.5f, 7.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 1.0f});
     w.add<PointLight>(w.create(), PointLight{{-1.0f, 3.0f, 7.0f}, {0.45f, 0.55f, 1.0f}, 0.7f});
     w.add<PointLight>(w.create(), PointLight{{7.0f, 3.5f, 1.0f}, {1.0f, 0.85f, 0.45f}, 0.7f});
     w.set_resource<Environment>();
 
-    // The sky camera's map (seed 004), rasterised from the boxes above.
+    // The sky camera's map [SKY], rasterised from the boxes above.
     OcclusionMap& map = w.set_resource<OcclusionMap>();
     map.x0 = -6.0f;
     map.z0 = -6.0f;

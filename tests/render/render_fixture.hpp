@@ -39,7 +39,7 @@ inline constexpr float fixture_unit_height = 0.002f;
 
 /// The fixed scene (see render_fixture.cpp): ground with snow, a house with a
 /// snow-covered roof, an open shelter whose roof hides a crate, three coloured
-/// lights (seed 002 §5), an occlusion map and flakes at fixed positions.
+/// lights [WF §5], an occlusion map and flakes at fixed positions.
 struct FixtureScene {
     World world;
     ViewCamera camera;

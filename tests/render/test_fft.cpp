@@ -1,7 +1,8 @@
 // The project's radix-2 FFT (render/fft.hpp), used for the spectral snow
-// volume of seed 000: against a naive DFT, round trips, 3-D composition.
+// volume of [LZ]: against a naive DFT, round trips, 3-D composition.
 #include "ecs/rng.hpp"
 #include "render/fft.hpp"
+#include "systems/random_streams.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,7 @@ namespace {
 std::vector<Complex> random_signal(std::size_t n, std::uint64_t seed) {
     std::vector<Complex> x(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const RngKey key{seed, 0, static_cast<std::uint32_t>(i), Stream::test};
+        const RngKey key{seed, 0, static_cast<std::uint32_t>(i), random_stream::test};
         x[i] = {rng_range(key, 0, -1.0f, 1.0f), rng_range(key, 1, -1.0f, 1.0f)};
     }
     return x;

@@ -1,4 +1,4 @@
-// Flakes as point sprites (seeds 003/004): selection (alive, frustum, level of
+// Flakes as point sprites ([ZCL], [SKY]): selection (alive, frustum, level of
 // detail), drawing, far flakes fainter.
 #include "render/flake_selection.hpp"
 #include "render/renderer.hpp"

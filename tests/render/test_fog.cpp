@@ -1,4 +1,4 @@
-// Fog (seeds 001, 004): the E(y) table, where fog changes the image, and that a
+// Fog ([PE], [SKY]): the E(y) table, where fog changes the image, and that a
 // world without Fog compiles and runs no fog code.
 #include "render/fog_table.hpp"
 #include "render/renderer.hpp"

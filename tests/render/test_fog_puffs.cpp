@@ -1,4 +1,4 @@
-// Fog puffs (seed 001): the closed-form line integrals of Gaussian and Gabor
+// Fog puffs [PE]: the closed-form line integrals of Gaussian and Gabor
 // puffs against numeric integration, on the CPU (double) and in the shader
 // (float, through a probe that runs the pass's GLSL), and the pass itself.
 #include "render/fog_puffs.hpp"

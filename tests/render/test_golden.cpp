@@ -1,5 +1,5 @@
 // Golden images of the fixture scene on OSMesa/llvmpipe at 320x240 (output is
-// bit-identical across thread counts: TOOLCHAIN.md). Regenerate with
+// bit-identical across thread counts: docs/toolchain.md). Regenerate with
 // SNOW_UPDATE_GOLDEN=1 after an intended change, and look at the images.
 #include "render_fixture.hpp"
 

@@ -1,5 +1,5 @@
-// Snow on surfaces: sky exposure and incline (seed 004), heightfield meshes
-// with aprons (seed 002 §6), re-upload only when snow changed.
+// Snow on surfaces: sky exposure and incline [SKY], heightfield meshes
+// with aprons [WF §6], re-upload only when snow changed.
 #include "render/renderer.hpp"
 #include "render/surface_mesh.hpp"
 #include "render_fixture.hpp"
@@ -44,7 +44,7 @@ TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
     bare.mesh_snow = 0.0f;
     const Image with_snow = render_image(scene.world, scene.camera);
     const Image without = render_image(scene.world, scene.camera, bare);
-    // The house's front wall faces +z: dot(N, up) = 0, so snow never shows (seed 004 step 3).
+    // The house's front wall faces +z: dot(N, up) = 0, so snow never shows [SKY step 3].
     const glm::ivec2 wall = to_pixel(scene.camera, {-2.5f, 1.0f, 1.0f});
     EXPECT_EQ(mean_color(with_snow, wall, 2), mean_color(without, wall, 2));
     // The shelter's roof faces up and is exposed: snow makes it much brighter.

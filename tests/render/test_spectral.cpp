@@ -1,4 +1,4 @@
-// Far-field spectral snow (seed 000): the volume is real, periodic, band
+// Far-field spectral snow [LZ]: the volume is real, periodic, band
 // limited with power ∝ 1/|ω| and on the dispersion surface; the pass draws it
 // only beyond the particles and only for worlds that declare it.
 #include "render/renderer.hpp"
@@ -111,7 +111,7 @@ TEST(SpectralVolume, TemporalSpectrumOfAlphaLiesOnTheDispersionSurface) {
             const bool in_band = k >= s.band_low && k <= s.band_high &&
                                  std::abs(kx) < static_cast<int>(n / 2) &&
                                  std::abs(ky) < static_cast<int>(n / 2);
-            // Seed 000's "small range of constants c": kt between the rounded ends.
+            // The "small range of constants c" of [LZ]: kt between the rounded ends.
             const int lo_c =
                 spectral_temporal_frequency(kx, ky, c_max * (1.0 - spectral_speed_spread));
             const int hi_c = spectral_temporal_frequency(kx, ky, c_max);

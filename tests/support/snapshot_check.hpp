@@ -1,13 +1,15 @@
 /// @file snapshot_check.hpp
 /// @brief Test support: a restored simulation continues bit for bit as the
 /// run it was saved from (the state hash on every tick, the full flake
-/// arrays and every surface's snow at the end).
+/// arrays, every surface's snow and base, every cover's drop cells and every
+/// body at the end).
 #pragma once
 
 #include "systems/simulation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -16,15 +18,30 @@ namespace snow::test {
 /// Everything a run leaves behind that a test can compare exactly.
 struct RunEnd {
     FlakePool flakes;
-    std::vector<std::vector<std::uint32_t>> snow; ///< per surface, pool order
+    std::vector<std::vector<std::uint32_t>> snow;       ///< per surface, pool order
+    std::vector<std::vector<std::int64_t>> base;        ///< per surface, pool order
+    std::vector<std::vector<std::uint32_t>> edge_cells; ///< per cover, pool order
+    std::vector<Body> bodies;                           ///< pool order
     MassLedger ledger;
     SimCounters counters;
 };
 
 inline RunEnd run_end(const Simulation& sim) {
-    RunEnd r{sim.flakes(), {}, sim.world().resource<MassLedger>(), sim.counters()};
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) { r.snow.push_back(s.snow); });
+    RunEnd r{sim.flakes(), {}, {}, {}, {}, sim.world().resource<MassLedger>(), sim.counters()};
+    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+        r.snow.push_back(s.snow);
+        r.base.push_back(s.base_level);
+    });
+    sim.world().each<SnowCover>(
+        [&](Entity, const SnowCover& c) { r.edge_cells.push_back(c.edge_cells); });
+    sim.world().each<Body>([&](Entity, const Body& b) { r.bodies.push_back(b); });
     return r;
+}
+
+/// Pose, path progress and carried snow agree bit for bit.
+inline bool same_body(const Body& a, const Body& b) {
+    return a.position == b.position && a.previous == b.previous && a.radius == b.radius &&
+           a.segment == b.segment && a.along == b.along && a.carried == b.carried;
 }
 
 /// The live parts of two runs' ends agree bit for bit (the path starts are
@@ -44,6 +61,13 @@ inline ::testing::AssertionResult same_end(const RunEnd& a, const RunEnd& b) {
     if (a.snow != b.snow) {
         return ::testing::AssertionFailure() << "surface snow differs";
     }
+    if (a.base != b.base || a.edge_cells != b.edge_cells) {
+        return ::testing::AssertionFailure() << "cover bases differ";
+    }
+    if (!std::equal(a.bodies.begin(), a.bodies.end(), b.bodies.begin(), b.bodies.end(),
+                    same_body)) {
+        return ::testing::AssertionFailure() << "bodies differ";
+    }
     const MassLedger &l = a.ledger, &m = b.ledger;
     if (l.spawned != m.spawned || l.removed() != m.removed()) {
         return ::testing::AssertionFailure() << "ledgers differ";
@@ -52,7 +76,7 @@ inline ::testing::AssertionResult same_end(const RunEnd& a, const RunEnd& b) {
     if (c.landed != d.landed || c.rolled != d.rolled || c.spilled_units != d.spilled_units ||
         c.occlusion_refreshes != d.occlusion_refreshes ||
         c.smoothing_iterations != d.smoothing_iterations ||
-        c.stiff_flake_ticks != d.stiff_flake_ticks) {
+        c.stiff_flake_ticks != d.stiff_flake_ticks || c.carved_units != d.carved_units) {
         return ::testing::AssertionFailure() << "counters differ";
     }
     return ::testing::AssertionSuccess();

@@ -1,6 +1,7 @@
-// collide_system against bounds, spheres, boxes and mesh tops (seed 002 §4, seed 004).
+// collide_system against bounds, spheres, boxes and mesh tops ([WF §4], [SKY]).
 #include "ecs/rng.hpp"
 #include "systems/collider_grid.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -277,7 +278,7 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
     const Entity mesh = sim.add_mesh_collider(tent);
     sim.add_surface(top_surface(2.0f, 2.0f, 3.0f, 4.0f, 2.0f), mesh);
     for (std::uint32_t i = 0; i < 40; ++i) {
-        const RngKey k{7, 0, i, Stream::test};
+        const RngKey k{7, 0, i, random_stream::test};
         const glm::vec3 c{rng_range(k, 0, -9, 9), rng_range(k, 1, 0, 4), rng_range(k, 2, -9, 9)};
         const glm::vec3 h{rng_range(k, 3, 0.2f, 1.5f), rng_range(k, 4, 0.01f, 1.0f),
                           rng_range(k, 5, 0.2f, 1.5f)};
@@ -293,7 +294,7 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
     sim.set_occlusion(OcclusionCamera{128, 0.0f});
     occlusion_system(sim.world());
     for (std::uint32_t i = 0; i < flakes; ++i) {
-        const RngKey k{11, 0, i, Stream::test};
+        const RngKey k{11, 0, i, random_stream::test};
         const glm::vec3 p{rng_range(k, 0, -10.5f, 10.5f), rng_range(k, 1, -1.2f, 8.0f),
                           rng_range(k, 2, -10.5f, 10.5f)};
         const float fast = i % 97 == 0 ? 60.0f : 1.0f;

@@ -1,7 +1,8 @@
-// deposit: landing on the right surface and cell, the rolling rules of seed
-// 003 §IV at their stated frequencies, surface validation, concentrated
-// landing (seed 002 §4/§6) and thread-count independence.
+// deposit: landing on the right surface and cell, the rolling rules of
+// [ZCL §IV] at their stated frequencies, surface validation, concentrated
+// landing [WF §4, §6] and thread-count independence.
 #include "ecs/rng.hpp"
+#include "systems/random_streams.hpp"
 #include "systems/simulation.hpp"
 #include "systems/units.hpp"
 
@@ -308,7 +309,7 @@ TEST(Deposit, RollsAtTheGridEdgeUseOnlyExistingNeighbours) {
 }
 
 TEST(Deposit, ConcentratedLandingStaysBounded) {
-    // Seed 002 §4/§6: heavy flakes hitting one spot made the field blow up.
+    // [WF §4, §6]: heavy flakes hitting one spot made the field blow up.
     // 100 000 units on one cell in four ticks, through the whole tick.
     Simulation sim(small_config(256));
     const Entity e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
@@ -357,7 +358,7 @@ std::unique_ptr<Simulation> busy(unsigned threads) {
     sim->add_surface(roof, box);
     sim->add_surface(flat(2.0f, 2.0f, 1.0f, 0.05f, 0.3f));
     for (std::uint32_t i = 0; i < 40000; ++i) {
-        const RngKey k{99, 0, i, Stream::test};
+        const RngKey k{99, 0, i, random_stream::test};
         place_flake(*sim,
                     {rng_range(k, 0, -3.9f, 3.9f), rng_range(k, 1, 0.0f, 1.6f),
                      rng_range(k, 2, -3.9f, 3.9f)},

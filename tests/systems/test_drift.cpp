@@ -1,4 +1,4 @@
-// Seed 002 §4: flakes that run into a box are moved to its nearest outside
+// [WF §4]: flakes that run into a box are moved to its nearest outside
 // point and slide down, which builds a drift at the base of the windward side.
 #include "systems/sample_scenes.hpp"
 

@@ -54,7 +54,7 @@ TEST(Integrate, EveryRuleReachesTerminalVelocityTowardsWind) {
 }
 
 TEST(Integrate, ExplicitEulerMatchesSeedFormula) {
-    // One step by hand: v += (g + c(w − v))·dt, then p += v·dt (seed 003 eqs. 1-3).
+    // One step by hand: v += (g + c(w − v))·dt, then p += v·dt ([ZCL eqs. 1–3]).
     OneFlake one(tall_box(Integrator::explicit_euler, 0.1f), 2.0f, {0, 5, 0}, {0, 0, 0});
     one.sim.tick();
     const float v = 0.0f + (-9.81f + 2.0f * (0.0f - 0.0f)) * 0.1f;

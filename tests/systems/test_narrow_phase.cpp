@@ -1,4 +1,4 @@
-// The narrow-phase tests of one flake path against one shape (seed 002 §4):
+// The narrow-phase tests of one flake path against one shape [WF §4]:
 // where a segment enters an open box or sphere, and what it is when it
 // starts inside.
 #include "systems/narrow_phase.hpp"

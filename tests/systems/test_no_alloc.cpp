@@ -157,6 +157,7 @@ TEST(NoAllocation, WarmTicksWithEverySystemAllocateNothing) {
         EXPECT_GT(after.smoothing_iterations, before.smoothing_iterations);
         EXPECT_GT(after.spilled_units, before.spilled_units);
         EXPECT_GT(after.occlusion_refreshes, before.occlusion_refreshes);
+        EXPECT_GT(after.carved_units, before.carved_units);
         EXPECT_GT(sim->mass().removed, 0u);
         EXPECT_TRUE(sim->mass().balanced());
     }

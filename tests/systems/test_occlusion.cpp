@@ -1,4 +1,4 @@
-// The occlusion ("sky") camera of seed 004: depth map from above, exposure, tilt, refresh.
+// The occlusion ("sky") camera of [SKY]: depth map from above, exposure, tilt, refresh.
 #include "systems/simulation.hpp"
 
 #include <gtest/gtest.h>

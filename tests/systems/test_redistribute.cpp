@@ -1,6 +1,6 @@
-// redistribute: the Laplacian cap of seed 002 §3 must smooth any pile with no
-// negative cell, exact mass, no new maximum (RELIABILITY.md: a mass check
-// alone misses a blow-up) and no sweep-direction bias.
+// redistribute: the Laplacian cap of [WF §3] must smooth any pile with no
+// negative cell, exact mass, no new maximum (a mass check alone misses a
+// blow-up: docs/design.md "Numerical stability") and no sweep-direction bias.
 #include "systems/simulation.hpp"
 #include "tests/support/settle.hpp"
 
@@ -26,7 +26,7 @@ struct Field {
     [[nodiscard]] std::uint32_t peak() {
         return *std::max_element(s().snow.begin(), s().snow.end());
     }
-    /// n·h − Σ neighbour levels of the cell (the discrete Laplacian of seed 002 §3).
+    /// n·h − Σ neighbour levels of the cell (the discrete Laplacian of [WF §3]).
     std::int64_t laplacian(std::uint32_t ix, std::uint32_t iz) {
         std::size_t nb[4];
         const std::uint32_t n = s().neighbours(ix, iz, nb);

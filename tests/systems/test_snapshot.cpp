@@ -19,6 +19,43 @@ namespace {
 
 constexpr std::uint64_t ahead_ticks = hard::scaled<std::uint64_t>(900, 120);
 
+FlakePool& pool(Simulation& s) {
+    return s.world().resource<FlakePool>();
+}
+/// An alive slot of the pool.
+std::uint32_t alive_slot(const Simulation& s) {
+    const FlakePool& f = s.flakes();
+    std::uint32_t i = 0;
+    while (!f.is_alive(i)) {
+        ++i;
+    }
+    return i;
+}
+SnowSurface& ground(Simulation& s) {
+    return s.world().pool<SnowSurface>().components().front();
+}
+SnowSurface& cover(Simulation& s) {
+    return s.world().get<SnowSurface>(s.world().pool<SnowCover>().entities().front());
+}
+SnowCover& cover_of(Simulation& s) {
+    return s.world().pool<SnowCover>().components().front();
+}
+Body& ball(Simulation& s) {
+    return s.world().pool<Body>().components().front();
+}
+/// A cell of the cover with geometry under it.
+std::size_t solid_cover_cell(Simulation& s) {
+    const SnowSurface& c = cover(s);
+    std::size_t i = 0;
+    while (c.is_void(i)) {
+        ++i;
+    }
+    return i;
+}
+OcclusionMap& sky_map(Simulation& s) {
+    return s.world().resource<OcclusionMap>();
+}
+
 TEST(Snapshot, RestoredStormContinuesBitForBit) {
     auto sim = make_stormy_yard(1);
     test::expect_restore_replays(*sim, 300, ahead_ticks);
@@ -28,6 +65,9 @@ TEST(Snapshot, RestoredStormContinuesBitForBit) {
     EXPECT_GT(c.spilled_units, 0u);
     EXPECT_GT(c.rolled, 0u);
     EXPECT_GT(sim->world().resource<MassLedger>().removed_bare, 0u) << "no flake met the bare mesh";
+    EXPECT_GT(c.carved_units, 0u) << "the snowball never rolled through snow";
+    EXPECT_GT(sim->mass().carried, 0u) << "the snowball carries nothing";
+    EXPECT_GT(cover(*sim).settled_units(), 0u) << "no snow on the cover";
     EXPECT_TRUE(sim->mass().balanced());
 }
 
@@ -59,15 +99,35 @@ TEST(Snapshot, RestoreBeforeTheFirstTickAndBeforeTheFirstMap) {
 }
 
 TEST(Snapshot, RestoreRightAfterAGeometryChange) {
-    // Saved while the map is stale (the box was added after the last tick):
-    // the map the next tick uses is the saved, stale one.
+    // Saved while the map and the cover are stale (a box and a sphere were
+    // added after the last tick): the next tick rebuilds the cover's base
+    // (shedding its snow there) and refreshes the saved, stale map.
     auto sim = make_stormy_yard(1);
     sim->run(50);
     sim->add_box({{4.0f, 0.0f, 3.0f}, {6.0f, 2.0f, 5.0f}});
+    const Entity under_cover = sim->add_sphere({6.0f, 0.5f, 6.0f}, 0.5f);
+    const std::vector<std::int64_t> base = cover(*sim).base_level;
     test::expect_restore_replays(*sim, 0, 60);
+    EXPECT_NE(cover(*sim).base_level, base) << "the cover never followed the new sphere";
+    // And restored after the geometry changed back: the cover follows it again.
+    sim->run(20);
+    const auto snap = sim->save();
+    sim->remove(under_cover);
+    sim->run(20);
+    const std::uint64_t without = sim->state_hash();
+    sim->restore(*snap);
+    EXPECT_NE(sim->state_hash(), without);
+    sim->run(20);
+    EXPECT_EQ(sim->state_hash(), without) << "a restored cover must follow the current geometry";
 }
 
 TEST(Snapshot, RejectsASnapshotOfAnotherScene) {
+    {
+        auto sim = make_stormy_yard(1);
+        auto more = make_stormy_yard(1);
+        more->add_body(BodyDef{});
+        EXPECT_THROW(sim->restore(*more->save()), SnowError) << "a body too many";
+    }
     auto sim = make_stormy_yard(1);
     sim->run(5);
     const std::uint64_t before = sim->state_hash();
@@ -90,25 +150,6 @@ struct Change {
     std::function<void(Simulation&)> apply;
     bool tick_state; ///< a tick changes it, so a restore must undo it
 };
-
-FlakePool& pool(Simulation& s) {
-    return s.world().resource<FlakePool>();
-}
-/// An alive slot of the pool.
-std::uint32_t alive_slot(const Simulation& s) {
-    const FlakePool& f = s.flakes();
-    std::uint32_t i = 0;
-    while (!f.is_alive(i)) {
-        ++i;
-    }
-    return i;
-}
-SnowSurface& ground(Simulation& s) {
-    return s.world().pool<SnowSurface>().components().front();
-}
-OcclusionMap& sky_map(Simulation& s) {
-    return s.world().resource<OcclusionMap>();
-}
 
 std::vector<Change> changes() {
     std::vector<Change> c;
@@ -156,6 +197,7 @@ std::vector<Change> changes() {
     counter_change("smoothing_iterations", &SimCounters::smoothing_iterations);
     counter_change("spilled_units", &SimCounters::spilled_units);
     counter_change("occlusion_refreshes", &SimCounters::occlusion_refreshes);
+    counter_change("carved_units", &SimCounters::carved_units);
     c.push_back({"wind current",
                  [](Simulation& s) { s.world().resource<Wind>().current.x += 0.5f; }, true});
     c.push_back({"wind walk offset",
@@ -174,6 +216,36 @@ std::vector<Change> changes() {
     c.push_back(
         {"cells waiting for smoothing", [](Simulation& s) { ground(s).mark_dirty(1, 1); }, true});
     c.push_back({"level bound", [](Simulation& s) { ++ground(s).level_bound; }, true});
+    c.push_back(
+        {"snow on the cover", [](Simulation& s) { ++cover(s).snow[solid_cover_cell(s)]; }, true});
+    c.push_back(
+        {"cover base", [](Simulation& s) { ++cover(s).base_level[solid_cover_cell(s)]; }, true});
+    c.push_back({"cover gone stale", [](Simulation& s) { cover_of(s).built = false; }, true});
+    const auto body_change = [&c](const std::string& name, const std::function<void(Body&)>& fn) {
+        c.push_back({"body " + name, [fn](Simulation& s) { fn(ball(s)); }, true});
+    };
+    body_change("position", [](Body& b) { b.position.x += 0.25f; });
+    body_change("previous", [](Body& b) { b.previous.z += 0.25f; });
+    body_change("radius", [](Body& b) { b.radius += 0.25f; });
+    body_change("path segment", [](Body& b) { b.segment = (b.segment + 1) % 4; });
+    body_change("path progress", [](Body& b) { b.along += 0.25f; });
+    body_change("carried snow", [](Body& b) { ++b.carried; });
+    body_change("target", [](Body& b) {
+        b.has_target = true;
+        b.target = b.position;
+    });
+    c.push_back({"body velocity",
+                 [](Simulation& s) {
+                     s.set_body_velocity(s.world().pool<Body>().entities().front(), {1, 0, 0});
+                 },
+                 true});
+    c.push_back({"body path",
+                 [](Simulation& s) {
+                     BodyMotion m;
+                     m.waypoints = {{0, 0, -6}, {2, 0, -6}};
+                     s.set_body_motion(s.world().pool<Body>().entities().front(), m);
+                 },
+                 true});
     c.push_back({"sky map lean", [](Simulation& s) { sky_map(s).wind_angle += 0.1f; }, true});
     c.push_back({"sky map never built", [](Simulation& s) { sky_map(s) = OcclusionMap{}; }, true});
     c.push_back(
@@ -196,6 +268,8 @@ std::vector<Change> changes() {
                  },
                  false});
     c.push_back({"a surface", [](Simulation& s) { s.add_surface(SurfaceDef{}); }, false});
+    c.push_back({"a cover", [](Simulation& s) { s.add_cover(CoverDef{}); }, false});
+    c.push_back({"a body", [](Simulation& s) { s.add_body(BodyDef{}); }, false});
     c.push_back(
         {"removing a solid",
          [](Simulation& s) { s.remove(s.world().pool<SphereCollider>().entities().front()); },
@@ -219,10 +293,10 @@ TEST(Snapshot, StateHashSeesEveryKindOfStateAndRestoreUndoesTickState) {
         }
         ++checked;
     }
-    EXPECT_GE(checked, 44);
+    EXPECT_GE(checked, 59);
 }
 
-TEST(Snapshot, StateHashSeesStaleSkyMapTexelsAndTheOrderOfDirtyTiles) {
+TEST(Snapshot, StateHashSeesStaleSkyMapTexelsAndCoverColumnsAndTheOrderOfDirtyTiles) {
     auto sim = make_stormy_yard(1);
     sim->run(40);
     // A stale map (what it is after a source change until the end of the
@@ -231,6 +305,11 @@ TEST(Snapshot, StateHashSeesStaleSkyMapTexelsAndTheOrderOfDirtyTiles) {
     const std::uint64_t stale = sim->state_hash();
     sky_map(*sim).top_y[7] += 1.0f;
     EXPECT_NE(sim->state_hash(), stale);
+    // So is a stale cover's record of the columns it was built from.
+    cover_of(*sim).built = false;
+    const std::uint64_t stale_cover = sim->state_hash();
+    cover_of(*sim).column_top[solid_cover_cell(*sim)] += 1.0f;
+    EXPECT_NE(sim->state_hash(), stale_cover);
     // The same dirty cells, marked in another order.
     SnowSurface& g = ground(*sim);
     g.clear_dirty();

@@ -1,4 +1,4 @@
-// spill: seed 002 §3, snow over an edge limit is emitted into the scene and
+// spill: [WF §3], snow over an edge limit is emitted into the scene and
 // falls onto the surfaces below; mass moves from settled to airborne exactly.
 #include "systems/simulation.hpp"
 #include "systems/units.hpp"

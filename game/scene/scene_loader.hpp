@@ -1,7 +1,7 @@
 /// @file scene_loader.hpp
-/// @brief Loads a glTF 2.0 scene whose `extras.snow` objects declare what the
-/// simulation does with each node (docs/scenes.md). The one public header of
-/// snow::scene; the scene_*.hpp files beside it are internals.
+/// @brief Loads a glTF 2.0 scene (.gltf or .glb) whose `extras.snow` objects
+/// declare what the simulation does with each node (docs/scenes.md). The one
+/// public header of snow::scene; the scene_*.hpp files beside it are internals.
 #pragma once
 
 #include "systems/simulation.hpp"
@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace snow {
 
@@ -36,21 +37,29 @@ struct SceneLoadResult {
     std::unique_ptr<Simulation> sim;
     std::string error;
     std::string name; ///< the glTF scene's name, else the file's stem
+    /// What the loader skipped ("<file>: <field> <problem>": a missing texture
+    /// image, a non-triangle primitive, ...); each is also printed to stderr.
+    std::vector<std::string> warnings;
 };
 
-/// Largest .gltf text accepted (bytes); larger files are rejected before parsing.
+/// Largest glTF JSON accepted (a .gltf file, or a .glb's JSON chunk; bytes).
 inline constexpr std::size_t max_scene_bytes = 64u << 20;
-/// Largest total size of the external and embedded buffers of one scene (bytes).
+/// Largest total size of the buffers of one scene (bytes): external files,
+/// data URIs and a .glb's BIN chunk.
 inline constexpr std::size_t max_scene_buffer_bytes = 256u << 20;
+/// Largest scene file accepted (bytes); larger files are rejected unread.
+inline constexpr std::size_t max_scene_file_bytes = max_scene_bytes + max_scene_buffer_bytes;
 
-/// Loads a .gltf file; buffers may only come from data URIs or files inside
-/// the file's own folder.
+/// Loads a .gltf or .glb file (told apart by the .glb magic; a file named
+/// `.glb` must have it). Buffers come from data URIs, the .glb's BIN chunk or
+/// files inside the scene file's own folder.
 [[nodiscard]] SceneLoadResult load_scene_file(const std::string& path,
                                               const SceneOverrides& overrides = {});
 
-/// Loads glTF JSON text from memory; only data-URI buffers are allowed.
-/// `name_for_errors` prefixes every error message.
-[[nodiscard]] SceneLoadResult load_scene_memory(std::string_view gltf_json,
+/// Loads .gltf text or .glb bytes from memory; no file may be read, so
+/// buffers come from data URIs or the BIN chunk. `name_for_errors` prefixes
+/// every error and warning.
+[[nodiscard]] SceneLoadResult load_scene_memory(std::string_view bytes,
                                                 std::string_view name_for_errors,
                                                 const SceneOverrides& overrides = {});
 

@@ -1,15 +1,16 @@
 /// @file scene_geometry.hpp
 /// @brief Instances a glTF scene: walks the node graph from the scene's roots,
-/// composes transforms and turns every mesh primitive into world-space
-/// triangles (internal to snow::scene).
+/// composes transforms (glTF 2.0 §3.5.3) and turns every triangle primitive
+/// into world-space triangles (internal to snow::scene).
 #pragma once
 
+#include "game/scene/scene_document.hpp"
 #include "systems/geometry.hpp"
 
 #include <glm/vec3.hpp>
-#include <tiny_gltf.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,21 +35,25 @@ struct WorldNode {
     std::size_t index = 0; ///< into the file's `nodes`
     std::string name;
     glm::vec3 position{0.0f};               ///< world-space origin (for lights)
-    std::vector<WorldPrimitive> primitives; ///< empty without a mesh
+    std::vector<WorldPrimitive> primitives; ///< empty without a mesh of triangles
     Aabb bounds;                            ///< of all primitives; meaningful when non-empty
 };
 
 /// The instanced scene, nodes in depth-first order (children in file order).
 struct SceneGeometry {
-    std::size_t scene_index = 0;
+    std::optional<std::size_t> scene_index; ///< none: the file has no `scenes`
     std::string scene_name;
     std::vector<WorldNode> nodes;
 };
 
-/// Instances the file's default scene (`scene`, else scenes[0]). Rejects bad
-/// indices, cycles and shared children, malformed or non-finite transforms,
-/// non-triangle primitives and anything over the caps. Throws SceneError.
-[[nodiscard]] SceneGeometry instance_scene(const tinygltf::Model& model);
+/// Instances the file's default scene (`scene`, else scenes[0]); a file
+/// without `scenes` instances every root node (one that is nobody's child),
+/// in index order. Rejects bad indices, cycles and shared children, malformed,
+/// non-finite or non-affine transforms and anything over the caps. Primitives
+/// that are not triangles (points, lines, strips, fans) are skipped with a
+/// line in `warnings`. Throws SceneError.
+[[nodiscard]] SceneGeometry instance_scene(const GltfDocument& doc,
+                                           std::vector<std::string>& warnings);
 
 /// All triangles of a node, three world-space vertices each (mesh colliders).
 [[nodiscard]] std::vector<glm::vec3> node_triangles(const WorldNode& node);

@@ -4,10 +4,9 @@
 /// bytes actually loaded (internal to snow::scene; the cgltf/OSS-Fuzz habit).
 #pragma once
 
-#include "game/scene_error.hpp"
+#include "game/scene/scene_document.hpp"
 
 #include <glm/vec3.hpp>
-#include <tiny_gltf.h>
 
 #include <cstdint>
 #include <string>
@@ -20,11 +19,11 @@ inline constexpr std::size_t max_accessor_count = 1u << 24;
 
 /// Accessor `index` as finite float VEC3 values (POSITION, NORMAL).
 /// `field` names the referring property in errors. Throws SceneError.
-[[nodiscard]] std::vector<glm::vec3> read_vec3_accessor(const tinygltf::Model& model, int index,
-                                                        const std::string& field);
+[[nodiscard]] std::vector<glm::vec3>
+read_vec3_accessor(const GltfDocument& doc, std::uint64_t index, const std::string& field);
 
-/// Accessor `index` as unsigned SCALAR values (triangle indices).
-[[nodiscard]] std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& model,
-                                                             int index, const std::string& field);
+/// Accessor `index` as unsigned SCALAR values of 8, 16 or 32 bits (triangle indices).
+[[nodiscard]] std::vector<std::uint32_t>
+read_index_accessor(const GltfDocument& doc, std::uint64_t index, const std::string& field);
 
 } // namespace snow

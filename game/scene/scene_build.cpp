@@ -1,7 +1,7 @@
 // Scene creation. All simulation state goes through the Simulation facade
 // (which validates again and throws SnowError naming the field); the loader
 // adds only what the renderer reads: meshes, lights, camera, environment.
-#include "game/scene_build.hpp"
+#include "game/scene/scene_build.hpp"
 
 #include <glm/common.hpp>
 
@@ -106,8 +106,44 @@ Entity add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
     }
     case ColliderKind::mesh:
         return sim.add_mesh_collider(node_triangles(node));
+    case ColliderKind::capsule:
+        break; // always a body: add_body
     }
     return null_entity;
+}
+
+/// A node whose collider moves (a path, a snowball, or a capsule) is a body.
+bool is_body(const NodeSnow& role) {
+    return role.motion || role.snowball || role.collider == ColliderKind::capsule;
+}
+
+/// The moving body a node declares, shaped by its bounds.
+Entity add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
+    BodyDef d;
+    const glm::vec3 half = 0.5f * node.bounds.size();
+    d.position = 0.5f * (node.bounds.min + node.bounds.max);
+    switch (role.collider.value_or(ColliderKind::sphere)) {
+    case ColliderKind::box:
+        d.shape = BodyShape::box;
+        d.half_extents = half;
+        break;
+    case ColliderKind::capsule:
+        d.shape = BodyShape::capsule;
+        d.radius = std::max(half.x, half.z);
+        d.half_height = std::max(half.y - d.radius, 0.0f);
+        break;
+    case ColliderKind::sphere:
+    case ColliderKind::mesh:
+        d.shape = BodyShape::sphere;
+        d.radius = std::max({half.x, half.y, half.z});
+        break;
+    }
+    d.on_ground = role.on_ground;
+    d.snowball = role.snowball;
+    if (role.motion) {
+        d.motion = *role.motion;
+    }
+    return sim.add_body(d);
 }
 
 void add_renderables(World& world, const WorldNode& node) {
@@ -148,8 +184,11 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         const WorldNode& node = d.geometry.nodes[i];
         const NodeSnow& role = d.roles[i];
         const std::string path = "nodes[" + std::to_string(node.index) + "].extras.snow";
-        if ((role.surface || role.collider) && node.primitives.empty()) {
-            scene_fail(path, "declares a surface or collider, but the node has no mesh");
+        if ((role.surface || role.collider || is_body(role)) && node.primitives.empty()) {
+            scene_fail(path, "declares a surface, collider or body, but the node has no triangle mesh");
+        }
+        if (role.collider == ColliderKind::mesh && is_body(role)) {
+            scene_fail(path + ".collider", "a moving body must be a sphere, box or capsule");
         }
         if (role.surface) {
             surfaces[i] = surface_over(*role.surface, node.bounds);
@@ -166,7 +205,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         const NodeSnow& role = d.roles[i];
         const std::string prefix = "nodes[" + std::to_string(node.index) + "].extras.snow.";
         Entity owner = null_entity;
-        if (role.collider) {
+        if (is_body(role)) {
+            through_facade(prefix, [&] { return add_body(*sim, node, role); });
+        } else if (role.collider) {
             owner = through_facade(prefix + "collider: ",
                                    [&] { return add_collider(*sim, node, *role.collider); });
         }
@@ -196,6 +237,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     }
     if (s.spectral) {
         through_facade(prefix, [&] { sim->set_spectral(*s.spectral); });
+    }
+    if (s.cover) {
+        through_facade(prefix, [&] { return sim->add_cover(*s.cover); });
     }
     // After the scene's own camera and the default one mesh colliders bring.
     if (const auto* cam = world.try_resource<OcclusionCamera>(); cam && o.occlusion_resolution) {

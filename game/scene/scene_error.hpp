@@ -24,7 +24,7 @@ class SceneError : public std::runtime_error {
 
 /// `"text"` with the quotes, for error messages. (Built by appending: GCC 12
 /// warns falsely, -Wrestrict, on `"\"" + std::string&&`.)
-[[nodiscard]] inline std::string quoted(const std::string& text) {
+[[nodiscard]] inline std::string in_quotes(const std::string& text) {
     std::string out(1, '"');
     out += text;
     out += '"';

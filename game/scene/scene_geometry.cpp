@@ -1,9 +1,9 @@
 // Scene instancing: node graph → world-space meshes. The graph is walked with
 // an explicit stack (no recursion for hostile depths) and a seen-mask, so a
 // cycle or a node with two parents is an error rather than a hang.
-#include "game/scene_geometry.hpp"
+#include "game/scene/scene_geometry.hpp"
 
-#include "game/scene_accessor.hpp"
+#include "game/scene/scene_accessor.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -21,7 +21,7 @@ namespace snow {
 
 namespace {
 
-std::string index_name(const char* list, std::size_t i) {
+std::string index_name(const char* list, std::uint64_t i) {
     return std::string(list) + "[" + std::to_string(i) + "]";
 }
 
@@ -50,7 +50,7 @@ void check_length(const std::vector<double>& v, std::size_t size, const std::str
     }
 }
 
-glm::dmat4 local_matrix(const tinygltf::Node& n, const std::string& at) {
+glm::dmat4 local_matrix(const GltfNode& n, const std::string& at) {
     check_length(n.matrix, 16, at + ".matrix");
     check_length(n.translation, 3, at + ".translation");
     check_length(n.rotation, 4, at + ".rotation");
@@ -64,6 +64,10 @@ glm::dmat4 local_matrix(const tinygltf::Node& n, const std::string& at) {
             for (int r = 0; r < 4; ++r) {
                 m[c][r] = n.matrix[static_cast<std::size_t>(c * 4 + r)]; // column-major
             }
+        }
+        // §5.25: a matrix must decompose into TRS, so its last row is 0 0 0 1.
+        if (!(m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0)) {
+            scene_fail(at + ".matrix", "must be affine (elements 3, 7, 11, 15 = 0, 0, 0, 1)");
         }
         return m;
     }
@@ -99,28 +103,18 @@ glm::vec3 to_float3(const glm::dvec3& v, const std::string& field, const char* w
     return glm::vec3(v);
 }
 
-glm::vec3 material_color(const tinygltf::Model& model, int material, const std::string& at) {
-    if (material < 0) {
-        return glm::vec3(1.0f);
+/// The material's baseColorFactor rgb (range and length checked when read).
+glm::vec3 material_color(const GltfDocument& doc, std::optional<std::uint64_t> material,
+                         const std::string& at) {
+    if (!material) {
+        return glm::vec3(1.0f); // glTF's default material
     }
-    if (static_cast<std::size_t>(material) >= model.materials.size()) {
+    if (*material >= doc.materials.size()) {
         scene_fail(at + ".material", "must name one of the file's " +
-                                         std::to_string(model.materials.size()) +
-                                         " materials (got " + std::to_string(material) + ")");
+                                         std::to_string(doc.materials.size()) + " materials (got " +
+                                         std::to_string(*material) + ")");
     }
-    const std::string field = index_name("materials", static_cast<std::size_t>(material)) +
-                              ".pbrMetallicRoughness.baseColorFactor";
-    const auto& f =
-        model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
-    if (f.size() != 4) {
-        scene_fail(field, "must have 4 numbers (got " + std::to_string(f.size()) + ")");
-    }
-    for (std::size_t i = 0; i < 4; ++i) {
-        if (!(f[i] >= 0.0 && f[i] <= 1.0)) {
-            scene_fail(field + "[" + std::to_string(i) + "]",
-                       "must be in [0, 1] (got " + number_text(f[i]) + ")");
-        }
-    }
+    const std::vector<double>& f = doc.materials[*material].base_color;
     return {static_cast<float>(f[0]), static_cast<float>(f[1]), static_cast<float>(f[2])};
 }
 
@@ -145,30 +139,25 @@ std::vector<glm::vec3> computed_normals(const WorldPrimitive& p) {
     return out;
 }
 
-WorldPrimitive world_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+WorldPrimitive world_primitive(const GltfDocument& doc, const GltfPrimitive& prim,
                                const std::string& at, const glm::dmat4& world, Budget& budget) {
-    if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES) {
-        scene_fail(at + ".mode", "must be 4 (TRIANGLES) (got " + std::to_string(prim.mode) + ")");
-    }
-    const auto pos = prim.attributes.find("POSITION");
-    if (pos == prim.attributes.end()) {
+    if (!prim.position) {
         scene_fail(at + ".attributes", "needs POSITION");
     }
     WorldPrimitive out;
-    out.positions = read_vec3_accessor(model, pos->second, at + ".attributes.POSITION");
+    out.positions = read_vec3_accessor(doc, *prim.position, at + ".attributes.POSITION");
     const std::size_t n = out.positions.size();
     charge(budget.vertices, n, max_scene_vertices, at, "vertices");
-    const auto nrm = prim.attributes.find("NORMAL");
-    if (nrm != prim.attributes.end()) {
-        out.normals = read_vec3_accessor(model, nrm->second, at + ".attributes.NORMAL");
+    if (prim.normal) {
+        out.normals = read_vec3_accessor(doc, *prim.normal, at + ".attributes.NORMAL");
         if (out.normals.size() != n) {
             scene_fail(at + ".attributes.NORMAL", "must have as many elements as POSITION (" +
                                                       std::to_string(n) + ", got " +
                                                       std::to_string(out.normals.size()) + ")");
         }
     }
-    if (prim.indices >= 0) {
-        out.indices = read_index_accessor(model, prim.indices, at + ".indices");
+    if (prim.indices) {
+        out.indices = read_index_accessor(doc, *prim.indices, at + ".indices");
         for (std::size_t i = 0; i < out.indices.size(); ++i) {
             if (out.indices[i] >= n) {
                 scene_fail(at + ".indices", "element " + std::to_string(i) + " is " +
@@ -177,7 +166,7 @@ WorldPrimitive world_primitive(const tinygltf::Model& model, const tinygltf::Pri
                                                 " vertices");
             }
         }
-    } else {
+    } else { // non-indexed: vertices in order, three per triangle
         out.indices.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             out.indices[i] = static_cast<std::uint32_t>(i);
@@ -188,7 +177,7 @@ WorldPrimitive world_primitive(const tinygltf::Model& model, const tinygltf::Pri
                            std::to_string(out.indices.size()) + ")");
     }
     charge(budget.indices, out.indices.size(), max_scene_indices, at, "indices");
-    out.color = material_color(model, prim.material, at);
+    out.color = material_color(doc, prim.material, at);
 
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);
@@ -221,22 +210,36 @@ WorldPrimitive world_primitive(const tinygltf::Model& model, const tinygltf::Pri
     return out;
 }
 
-void add_mesh(const tinygltf::Model& model, int mesh, const std::string& node_at,
-              const glm::dmat4& world, WorldNode& node, Budget& budget) {
-    if (static_cast<std::size_t>(mesh) >= model.meshes.size()) {
+/// glTF's names of the primitive modes, for warnings.
+const char* mode_name(std::uint32_t mode) {
+    static const char* names[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
+                                  "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
+    return mode < std::size(names) ? names[mode] : "unknown";
+}
+
+void add_mesh(const GltfDocument& doc, std::uint64_t mesh, const std::string& node_at,
+              const glm::dmat4& world, WorldNode& node, Budget& budget,
+              std::vector<std::string>& warnings) {
+    if (mesh >= doc.meshes.size()) {
         scene_fail(node_at + ".mesh", "must name one of the file's " +
-                                          std::to_string(model.meshes.size()) + " meshes (got " +
+                                          std::to_string(doc.meshes.size()) + " meshes (got " +
                                           std::to_string(mesh) + ")");
     }
-    const std::string mesh_at = index_name("meshes", static_cast<std::size_t>(mesh));
-    const auto& prims = model.meshes[static_cast<std::size_t>(mesh)].primitives;
-    if (prims.empty()) {
-        scene_fail(mesh_at + ".primitives", "must not be empty");
-    }
+    const std::string mesh_at = index_name("meshes", mesh);
+    const std::vector<GltfPrimitive>& prims = doc.meshes[mesh].primitives;
     for (std::size_t k = 0; k < prims.size(); ++k) {
         const std::string at = mesh_at + ".primitives[" + std::to_string(k) + "]";
+        if (prims[k].mode != gltf::mode_triangles) {
+            warnings.push_back(at + ".mode is " + std::to_string(prims[k].mode) + " (" +
+                               mode_name(prims[k].mode) +
+                               "); only TRIANGLES become geometry, so it is skipped");
+            continue;
+        }
         charge(budget.primitives, 1, max_scene_primitives, at, "primitives");
-        node.primitives.push_back(world_primitive(model, prims[k], at, world, budget));
+        node.primitives.push_back(world_primitive(doc, prims[k], at, world, budget));
+    }
+    if (node.primitives.empty()) {
+        return;
     }
     node.bounds = {node.primitives[0].positions[0], node.primitives[0].positions[0]};
     for (const WorldPrimitive& p : node.primitives) {
@@ -247,45 +250,71 @@ void add_mesh(const tinygltf::Model& model, int mesh, const std::string& node_at
     }
 }
 
-} // namespace
+/// A node to visit: its index, its parent's world transform and the property
+/// that named it (for errors).
+struct Pending {
+    std::uint64_t node;
+    glm::dmat4 parent;
+    std::string via;
+};
 
-SceneGeometry instance_scene(const tinygltf::Model& model) {
-    if (model.scenes.empty()) {
-        scene_fail("scenes", "must list at least one scene");
+/// The root nodes to start from, last first (the walk pops from the back).
+std::vector<Pending> roots(const GltfDocument& doc, SceneGeometry& g) {
+    std::vector<Pending> stack;
+    if (doc.scenes.empty()) {
+        if (doc.scene) {
+            scene_fail("scene", "refers to scene " + std::to_string(*doc.scene) +
+                                    ", but the file has no scenes");
+        }
+        // §3.3: without scenes, the file's content is its root nodes. Children
+        // named out of range fail later, at their parent.
+        std::vector<char> is_child(doc.nodes.size(), 0);
+        for (const GltfNode& n : doc.nodes) {
+            for (const std::uint64_t c : n.children) {
+                if (c < is_child.size()) {
+                    is_child[c] = 1;
+                }
+            }
+        }
+        for (std::size_t i = doc.nodes.size(); i-- > 0;) {
+            if (is_child[i] == 0) {
+                stack.push_back({i, glm::dmat4(1.0), "root node"});
+            }
+        }
+        return stack;
     }
-    const int chosen = model.defaultScene < 0 ? 0 : model.defaultScene;
-    if (static_cast<std::size_t>(chosen) >= model.scenes.size()) {
-        scene_fail("scene", "must name one of the file's " + std::to_string(model.scenes.size()) +
+    const std::uint64_t chosen = doc.scene.value_or(0);
+    if (chosen >= doc.scenes.size()) {
+        scene_fail("scene", "must name one of the file's " + std::to_string(doc.scenes.size()) +
                                 " scenes (got " + std::to_string(chosen) + ")");
     }
-    if (model.nodes.size() > max_scene_nodes) {
+    g.scene_index = static_cast<std::size_t>(chosen);
+    const GltfScene& scene = doc.scenes[chosen];
+    g.scene_name = scene.name;
+    const std::string list = index_name("scenes", chosen) + ".nodes";
+    for (std::size_t k = scene.nodes.size(); k-- > 0;) {
+        stack.push_back({scene.nodes[k], glm::dmat4(1.0), list + "[" + std::to_string(k) + "]"});
+    }
+    return stack;
+}
+
+} // namespace
+
+SceneGeometry instance_scene(const GltfDocument& doc, std::vector<std::string>& warnings) {
+    if (doc.nodes.size() > max_scene_nodes) {
         scene_fail("nodes", "must have at most " + std::to_string(max_scene_nodes) +
-                                " entries (got " + std::to_string(model.nodes.size()) + ")");
+                                " entries (got " + std::to_string(doc.nodes.size()) + ")");
     }
     SceneGeometry g;
-    g.scene_index = static_cast<std::size_t>(chosen);
-    const tinygltf::Scene& scene = model.scenes[g.scene_index];
-    g.scene_name = scene.name;
-
-    struct Pending {
-        int node;
-        glm::dmat4 parent;
-        std::string via; ///< the property that named this node, for errors
-    };
-    std::vector<Pending> stack;
-    const std::string roots = index_name("scenes", g.scene_index) + ".nodes";
-    for (std::size_t k = scene.nodes.size(); k-- > 0;) {
-        stack.push_back({scene.nodes[k], glm::dmat4(1.0), roots + "[" + std::to_string(k) + "]"});
-    }
-    std::vector<char> seen(model.nodes.size(), 0);
+    std::vector<Pending> stack = roots(doc, g);
+    std::vector<char> seen(doc.nodes.size(), 0);
     Budget budget;
     while (!stack.empty()) {
         const Pending item = std::move(stack.back());
         stack.pop_back();
-        if (item.node < 0 || static_cast<std::size_t>(item.node) >= model.nodes.size()) {
-            scene_fail(item.via, "must name one of the file's " +
-                                     std::to_string(model.nodes.size()) + " nodes (got " +
-                                     std::to_string(item.node) + ")");
+        if (item.node >= doc.nodes.size()) {
+            scene_fail(item.via, "must name one of the file's " + std::to_string(doc.nodes.size()) +
+                                     " nodes (got " + std::to_string(item.node) + ")");
         }
         const auto i = static_cast<std::size_t>(item.node);
         const std::string at = index_name("nodes", i);
@@ -293,14 +322,14 @@ SceneGeometry instance_scene(const tinygltf::Model& model) {
             scene_fail(at, "is reached twice from the scene (a cycle, or a child of two parents)");
         }
         seen[i] = 1;
-        const tinygltf::Node& n = model.nodes[i];
+        const GltfNode& n = doc.nodes[i];
         const glm::dmat4 world = item.parent * local_matrix(n, at);
         WorldNode node;
         node.index = i;
         node.name = n.name.empty() ? at : n.name;
         node.position = to_float3(glm::dvec3(world[3]), at, "the origin");
-        if (n.mesh != -1) { // tinygltf's "absent"
-            add_mesh(model, n.mesh, at, world, node, budget);
+        if (n.mesh) {
+            add_mesh(doc, *n.mesh, at, world, node, budget, warnings);
         }
         g.nodes.push_back(std::move(node));
         for (std::size_t k = n.children.size(); k-- > 0;) {

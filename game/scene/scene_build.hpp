@@ -4,9 +4,9 @@
 /// (internal to snow::scene).
 #pragma once
 
-#include "game/scene_geometry.hpp"
-#include "game/scene_loader.hpp"
-#include "game/scene_schema.hpp"
+#include "game/scene/scene_geometry.hpp"
+#include "game/scene/scene_loader.hpp"
+#include "game/scene/scene_schema.hpp"
 
 #include <memory>
 #include <optional>

@@ -1,0 +1,32 @@
+/// @file scene_buffers.hpp
+/// @brief Fills every glTF buffer with its bytes (internal to snow::scene):
+/// from a base64 `data:` URI, from the .glb's BIN chunk, or from a file inside
+/// the scene's folder and nowhere else. Images are never read: the simulation
+/// and the renderer use base colours only.
+#pragma once
+
+#include "game/scene/scene_document.hpp"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace snow {
+
+/// Where a scene's buffers may come from.
+struct BufferSources {
+    std::optional<std::span<const unsigned char>> bin; ///< the .glb's BIN chunk
+    std::string folder; ///< the scene file's folder (absolute); empty: no file may be read
+};
+
+/// Loads `doc.buffers[i].data` (exactly byteLength bytes each, at most
+/// max_scene_buffer_bytes in total). A URI may be a `data:` URI or a relative
+/// path that stays inside the folder (no absolute paths, schemes, backslashes
+/// or `..`; %-escapes are decoded first, symlinks resolved). Throws SceneError
+/// naming e.g. `buffers[0].uri`. Images whose files are missing or outside the
+/// folder only add a line to `warnings` (textures are not used).
+void load_buffers(GltfDocument& doc, const BufferSources& sources,
+                  std::vector<std::string>& warnings);
+
+} // namespace snow

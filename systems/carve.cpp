@@ -1,0 +1,182 @@
+// carve: a body that sinks into snow pushes the snow above its lowest point
+// out of its footprint into the ring of cells just outside it (the raised
+// rims of a trail); a snowball takes it instead. The footprint is swept from
+// last tick's pose to this one's in half-cell steps, so a fast body leaves a
+// continuous trench. Units only move: cell to cell, or cell to `carried`.
+#include "systems/body.hpp"
+#include "systems/limits.hpp"
+#include "systems/snow_surface.hpp"
+#include "systems/systems.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace snow {
+
+namespace {
+
+/// World resource: the local cell mask of one body on one surface (reused).
+struct CarveScratch {
+    std::vector<std::uint8_t> mask;  ///< 1 footprint, 0 outside
+    std::vector<std::int64_t> floor; ///< footprint: the level the body reaches down to
+    std::vector<std::uint32_t> ring;
+};
+
+/// The cells of `s` a body may touch this tick: its swept footprint's
+/// bounding box grown by the one-cell ring. False when it misses the grid.
+bool cell_window(const SnowSurface& s, const Body& b, CellBox& box) {
+    const float r = b.reach();
+    const double fx0 = (std::min(b.previous.x, b.position.x) - r - s.x0) / s.cell - 1.0;
+    const double fz0 = (std::min(b.previous.z, b.position.z) - r - s.z0) / s.cell - 1.0;
+    const double fx1 = (std::max(b.previous.x, b.position.x) + r - s.x0) / s.cell + 1.0;
+    const double fz1 = (std::max(b.previous.z, b.position.z) + r - s.z0) / s.cell + 1.0;
+    if (!(fx1 >= 0.0 && fz1 >= 0.0 && fx0 < s.nx && fz0 < s.nz)) {
+        return false; // NaN lands here too
+    }
+    box = {static_cast<std::uint32_t>(std::max(fx0, 0.0)),
+           static_cast<std::uint32_t>(std::max(fz0, 0.0)),
+           static_cast<std::uint32_t>(std::min(fx1, s.nx - 1.0)),
+           static_cast<std::uint32_t>(std::min(fz1, s.nz - 1.0))};
+    return true;
+}
+
+/// Lowest point (m) of the body over world (x, z) along this tick's sweep;
+/// false when no pose of the sweep covers it.
+bool swept_bottom(const Body& b, float x, float z, std::uint32_t steps, float& y) {
+    y = std::numeric_limits<float>::infinity();
+    bool hit = false;
+    for (std::uint32_t k = 0; k <= steps; ++k) {
+        const glm::vec3 at =
+            b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
+        float here = 0.0f;
+        if (b.bottom_at(at.y, x - at.x, z - at.z, here)) {
+            y = std::min(y, here);
+            hit = true;
+        }
+    }
+    return hit;
+}
+
+/// Marks the swept footprint in the window and, per footprint cell, the
+/// level the body's lowest point reaches down to.
+void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
+                    CarveScratch& scratch) {
+    const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
+    scratch.mask.assign(static_cast<std::size_t>(w) * h, 0);
+    scratch.floor.assign(scratch.mask.size(), 0);
+    const float travel = std::hypot(b.position.x - b.previous.x, b.position.z - b.previous.z);
+    const auto steps = static_cast<std::uint32_t>(std::ceil(travel / (0.5f * s.cell))) + 1;
+    for (std::uint32_t j = 0; j < h; ++j) {
+        for (std::uint32_t i = 0; i < w; ++i) {
+            const float x = s.x0 + (static_cast<float>(box.x0 + i) + 0.5f) * s.cell;
+            const float z = s.z0 + (static_cast<float>(box.z0 + j) + 0.5f) * s.cell;
+            float bottom = 0.0f;
+            if (swept_bottom(b, x, z, steps, bottom)) {
+                const std::size_t k = static_cast<std::size_t>(j) * w + i;
+                scratch.mask[k] = 1;
+                const double level = std::floor(static_cast<double>(bottom) / s.unit_height);
+                scratch.floor[k] = static_cast<std::int64_t>(
+                    std::clamp(level, -max_surface_level, max_surface_level));
+            }
+        }
+    }
+}
+
+/// Takes the snow above the body's lowest point out of the footprint cells;
+/// returns the units taken.
+std::uint64_t take_footprint(SnowSurface& s, const CellBox& box, const CarveScratch& scratch) {
+    const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
+    std::uint64_t taken = 0;
+    for (std::uint32_t j = 0; j < h; ++j) {
+        for (std::uint32_t i = 0; i < w; ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * w + i;
+            const std::size_t c = s.index(box.x0 + i, box.z0 + j);
+            if (scratch.mask[k] == 0 || s.is_void(c) || s.snow[c] == 0) {
+                continue;
+            }
+            const std::int64_t above = s.level(c) - std::max(s.base_level[c], scratch.floor[k]);
+            if (above > 0) {
+                const auto take =
+                    static_cast<std::uint32_t>(std::min<std::int64_t>(above, s.snow[c]));
+                s.snow[c] -= take;
+                taken += take;
+                s.mark_dirty(box.x0 + i, box.z0 + j);
+            }
+        }
+    }
+    return taken;
+}
+
+/// The ring: cells outside the footprint next to it (ascending index), not
+/// void, and not behind where the body started this tick (that is the trail
+/// it already cut).
+void find_ring(const SnowSurface& s, const Body& b, const CellBox& box, CarveScratch& scratch) {
+    const float dx = b.position.x - b.previous.x, dz = b.position.z - b.previous.z;
+    const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
+    scratch.ring.clear();
+    const auto in = [&](std::int64_t i, std::int64_t j) {
+        return i >= 0 && j >= 0 && i < w && j < h &&
+               scratch.mask[static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i)] != 0;
+    };
+    for (std::uint32_t j = 0; j < h; ++j) {
+        for (std::uint32_t i = 0; i < w; ++i) {
+            const std::size_t c = s.index(box.x0 + i, box.z0 + j);
+            const float x = s.x0 + (static_cast<float>(box.x0 + i) + 0.5f) * s.cell;
+            const float z = s.z0 + (static_cast<float>(box.z0 + j) + 0.5f) * s.cell;
+            const bool behind = (x - b.previous.x) * dx + (z - b.previous.z) * dz < 0.0f;
+            if (!in(i, j) && !s.is_void(c) && !behind &&
+                (in(i - 1, j) || in(i + 1, j) || in(i, j - 1) || in(i, j + 1))) {
+                scratch.ring.push_back(static_cast<std::uint32_t>(c));
+            }
+        }
+    }
+}
+
+/// Spreads `units` evenly over the ring; the first cells take the remainder.
+void raise_rims(SnowSurface& s, const CarveScratch& scratch, std::uint64_t units) {
+    const std::uint64_t n = scratch.ring.size();
+    for (std::uint64_t k = 0; k < n; ++k) {
+        const std::uint32_t c = scratch.ring[k];
+        s.snow[c] += static_cast<std::uint32_t>(units / n + (k < units % n ? 1 : 0));
+        s.mark_dirty(c % s.nx, c / s.nx);
+    }
+}
+
+} // namespace
+
+void carve_system(World& w) {
+    auto* scratch = w.try_resource<CarveScratch>();
+    if (scratch == nullptr) {
+        scratch = &w.set_resource<CarveScratch>();
+    }
+    auto& counters = w.resource<SimCounters>();
+    for (Body& b : w.pool<Body>().components()) {
+        for (SnowSurface& s : w.pool<SnowSurface>().components()) {
+            CellBox box;
+            if (!cell_window(s, b, box)) {
+                continue;
+            }
+            mark_footprint(b, s, box, *scratch);
+            if (!b.snowball) {
+                find_ring(s, b, box, *scratch);
+                if (scratch->ring.empty()) {
+                    continue; // nowhere to push it: the footprint fills the grid
+                }
+            }
+            const std::uint64_t taken = take_footprint(s, box, *scratch);
+            counters.carved_units += taken;
+            if (b.snowball) {
+                b.carried += taken;
+                b.radius = snowball_radius(b.bare_radius, b.carried);
+                continue;
+            }
+            if (taken > 0) {
+                raise_rims(s, *scratch, taken);
+            }
+        }
+    }
+}
+
+} // namespace snow

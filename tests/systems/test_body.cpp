@@ -1,0 +1,225 @@
+// Moving bodies: trails with raised rims, mass-exact; a snowball that grows
+// by exactly what it takes; swept trenches at speed; flakes pushed aside;
+// determinism and restore with bodies; bad input rejected.
+#include "systems/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace snow {
+namespace {
+
+constexpr float cell = 0.05f;
+constexpr std::uint32_t depth_units = 5000; // 10 cm of snow on 5 cm cells
+
+SimConfig world_config(unsigned threads = 1) {
+    SimConfig c;
+    c.seed = 3;
+    c.bounds = {{-3.0f, -1.0f, -3.0f}, {3.0f, 4.0f, 3.0f}};
+    c.max_flakes = 20000;
+    c.threads = threads;
+    return c;
+}
+
+/// A 4 m ground surface with 10 cm of snow in every cell.
+struct SnowyGround {
+    Simulation sim;
+    Entity ground;
+    explicit SnowyGround(unsigned threads = 1) : sim(world_config(threads)) {
+        SurfaceDef d;
+        d.x0 = d.z0 = -2.0f;
+        d.size_x = d.size_z = 4.0f;
+        d.cell = cell;
+        d.spills = false;
+        ground = sim.add_surface(d);
+        SnowSurface& s = sim.world().get<SnowSurface>(ground);
+        for (std::uint32_t& u : s.snow) {
+            u = depth_units;
+        }
+        sim.world().resource<MassLedger>().spawned += s.settled_units();
+    }
+    const SnowSurface& s() const { return sim.world().get<SnowSurface>(ground); }
+    std::uint32_t at(float x, float z) const {
+        std::uint32_t ix = 0, iz = 0;
+        EXPECT_TRUE(s().cell_at(x, z, ix, iz));
+        return s().snow[s().index(ix, iz)];
+    }
+    void run(int ticks) {
+        for (int t = 0; t < ticks; ++t) {
+            sim.tick();
+            ASSERT_TRUE(sim.mass().balanced()) << "tick " << t;
+        }
+    }
+};
+
+BodyDef ball(float x, float y, float r) {
+    BodyDef d;
+    d.position = {x, y, 0.0f};
+    d.radius = r;
+    return d;
+}
+
+TEST(Body, TrenchDepthMatchesTheSinkingAndRimsHoldTheSnow) {
+    SnowyGround g;
+    // Bottom 4 cm below the 10 cm snow top: a 4 cm deep trench.
+    const float r = 0.25f;
+    const Entity b = g.sim.add_body(ball(-1.5f, 0.06f + r, r));
+    g.sim.set_body_velocity(b, {1.0f, 0.0f, 0.0f});
+    const std::uint64_t settled = g.s().settled_units();
+    g.run(66); // 1.1 m: the body is 10 cm past x = -0.5
+    EXPECT_EQ(g.s().settled_units(), settled) << "pushed, not lost";
+    EXPECT_GT(g.sim.counters().carved_units, 0u);
+    // Smoothing starts softening the trench walls at once; the floor is still
+    // at the body's lowest point.
+    const std::uint32_t trench = g.at(-0.5f, 0.0f);
+    EXPECT_NEAR(static_cast<double>(trench) * g.s().unit_height, 0.06, 0.003);
+    // Just outside the footprint the rim stands above the untouched snow.
+    EXPECT_GT(g.at(-0.5f, r + 0.03f), depth_units);
+    EXPECT_EQ(g.at(-0.5f, 1.2f), depth_units) << "far away nothing changed";
+}
+
+TEST(Body, AFastBodyLeavesAContinuousTrench) {
+    SnowyGround g;
+    BodyDef d = ball(-1.8f, 0.0f, 0.2f);
+    d.on_ground = true; // rolls on the bare ground: the trench goes down to it
+    const Entity b = g.sim.add_body(d);
+    g.sim.set_body_velocity(b, {60.0f, 0.0f, 0.0f}); // a metre per tick, 20 cells
+    g.run(3);
+    // Down to the ground all along (smoothing lets a little back in from the rims).
+    for (float x = -1.6f; x < 1.2f; x += cell) {
+        EXPECT_LT(g.at(x, 0.0f), depth_units / 20) << "x = " << x;
+    }
+}
+
+TEST(Body, SnowfallFillsATrailAgain) {
+    SnowyGround g;
+    const Entity b = g.sim.add_body(ball(-1.5f, 0.0f, 0.2f));
+    g.sim.set_body_motion(b, BodyMotion{{{-1.5f, 0.2f, 0.0f}, {1.5f, 0.2f, 0.0f}}, 2.0f, false});
+    g.run(120);
+    const std::uint32_t carved = g.at(0.0f, 0.0f);
+    EXPECT_LT(carved, depth_units / 4);
+    Emitter e;
+    e.rate = 4000.0f;
+    g.sim.add_emitter(e);
+    g.run(900);
+    EXPECT_GT(g.at(0.0f, 0.0f), carved + 100) << "new snow lies in the trail";
+}
+
+TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
+    SnowyGround g;
+    BodyDef d = ball(-1.5f, 0.0f, 0.1f);
+    d.on_ground = true;
+    d.snowball = true;
+    d.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.0f, false};
+    const Entity b = g.sim.add_body(d);
+    const std::uint64_t settled = g.s().settled_units();
+    g.run(180);
+    const Body& body = g.sim.world().get<Body>(b);
+    ASSERT_GT(body.carried, 0u);
+    EXPECT_EQ(g.s().settled_units() + body.carried, settled);
+    EXPECT_EQ(g.sim.mass().carried, body.carried);
+    EXPECT_GT(body.radius, 0.1f);
+    EXPECT_FLOAT_EQ(body.radius, snowball_radius(0.1f, body.carried));
+    const std::uint64_t carried = body.carried;
+    EXPECT_EQ(g.sim.drop_snowball(b), carried);
+    EXPECT_EQ(g.sim.world().get<Body>(b).carried, 0u);
+    EXPECT_EQ(g.s().settled_units(), settled);
+    g.run(10);
+}
+
+TEST(Body, FlakesDoNotEndInsideAMovingBody) {
+    SnowyGround g;
+    Emitter e;
+    e.rate = 8000.0f;
+    g.sim.add_emitter(e);
+    const Entity b = g.sim.add_body(ball(-1.5f, 1.0f, 0.5f));
+    g.sim.set_body_motion(b, BodyMotion{{{-1.5f, 1.0f, 0.0f}, {1.5f, 1.0f, 0.0f}}, 1.5f, true});
+    for (int t = 0; t < 600; ++t) {
+        g.sim.tick();
+        ASSERT_TRUE(g.sim.mass().balanced());
+        const Body& body = g.sim.world().get<Body>(b);
+        const FlakePool& f = g.sim.flakes();
+        std::uint32_t inside = 0;
+        for (std::uint32_t i = 0; i < f.slot_end; ++i) {
+            const float dx = f.px[i] - body.position.x, dy = f.py[i] - body.position.y,
+                        dz = f.pz[i] - body.position.z;
+            inside += f.is_alive(i) && dx * dx + dy * dy + dz * dz < 0.99f * 0.25f ? 1 : 0;
+        }
+        ASSERT_EQ(inside, 0u) << "tick " << t;
+    }
+}
+
+TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
+    SnowyGround a(1), b(2);
+    for (SnowyGround* g : {&a, &b}) {
+        Emitter e;
+        e.rate = 3000.0f;
+        g->sim.add_emitter(e);
+        BodyDef d = ball(-1.5f, 0.0f, 0.15f);
+        d.on_ground = true;
+        d.snowball = true;
+        d.motion = BodyMotion{{{-1.5f, 0.0f, -1.0f}, {1.5f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.5f}},
+                              1.2f, true};
+        g->sim.add_body(d);
+        BodyDef walker;
+        walker.shape = BodyShape::capsule;
+        walker.radius = 0.2f;
+        walker.half_height = 0.6f;
+        walker.on_ground = true;
+        walker.motion = BodyMotion{{{1.0f, 0.0f, -1.5f}, {-1.0f, 0.0f, 1.5f}}, 1.4f, true};
+        g->sim.add_body(walker);
+    }
+    for (int t = 0; t < 300; ++t) {
+        a.sim.tick();
+        b.sim.tick();
+        ASSERT_EQ(a.sim.state_hash(), b.sim.state_hash()) << "tick " << t;
+    }
+    const auto saved = a.sim.save();
+    a.sim.run(200);
+    const std::uint64_t straight = a.sim.state_hash();
+    a.sim.restore(*saved);
+    a.sim.run(200);
+    EXPECT_EQ(a.sim.state_hash(), straight);
+}
+
+TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
+    SnowyGround g;
+    const std::uint64_t before = g.sim.state_hash();
+    const auto error_of = [&](auto&& fn) {
+        try {
+            fn();
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error_of([&] { g.sim.add_body(ball(0.0f, 0.0f, 0.0f)); }).find("body.radius"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { g.sim.add_body(ball(0.0f, 0.0f, 1.0e6f)); }).find("body.radius"),
+              std::string::npos);
+    const Entity b = g.sim.add_body(ball(0.0f, 1.0f, 0.2f));
+    const std::uint64_t with_body = g.sim.state_hash();
+    EXPECT_NE(error_of([&] { g.sim.set_body_motion(b, BodyMotion{{}, 1.0f, true}); })
+                  .find("motion.waypoints"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] {
+                  g.sim.set_body_motion(b, BodyMotion{{{0.0f, NAN, 0.0f}}, 1.0f, true});
+              }).find("motion.waypoints[0]"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] {
+                  g.sim.set_body_motion(b, BodyMotion{{{0.0f, 0.0f, 0.0f}}, -1.0f, true});
+              }).find("motion.speed"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { g.sim.move_body(b, {NAN, 0.0f, 0.0f}); }).find("move_body.position"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { g.sim.move_body(g.ground, {0.0f, 0.0f, 0.0f}); }).find("not a living body"),
+              std::string::npos);
+    EXPECT_EQ(g.sim.state_hash(), with_body);
+    EXPECT_NE(before, with_body);
+}
+
+} // namespace
+} // namespace snow
