@@ -1,6 +1,7 @@
 // Body shapes and the snowball's growth (validate(BodyDef) is in validation.cpp).
 #include "systems/body.hpp"
 
+#include "systems/limits.hpp"
 #include "systems/units.hpp"
 
 #include <algorithm>

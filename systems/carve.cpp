@@ -4,6 +4,7 @@
 // last tick's pose to this one's in half-cell steps, so a fast body leaves a
 // continuous trench. Units only move: cell to cell, or cell to `carried`.
 #include "systems/body.hpp"
+#include "systems/limits.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 
@@ -18,8 +19,8 @@ namespace {
 
 /// World resource: the local cell mask of one body on one surface (reused).
 struct CarveScratch {
-    std::vector<std::uint8_t> mask;   ///< 1 footprint, 0 outside
-    std::vector<std::int64_t> floor;  ///< footprint: the level the body reaches down to
+    std::vector<std::uint8_t> mask;  ///< 1 footprint, 0 outside
+    std::vector<std::int64_t> floor; ///< footprint: the level the body reaches down to
     std::vector<std::uint32_t> ring;
 };
 
@@ -65,8 +66,7 @@ void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
     const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
     scratch.mask.assign(static_cast<std::size_t>(w) * h, 0);
     scratch.floor.assign(scratch.mask.size(), 0);
-    const float travel =
-        std::hypot(b.position.x - b.previous.x, b.position.z - b.previous.z);
+    const float travel = std::hypot(b.position.x - b.previous.x, b.position.z - b.previous.z);
     const auto steps = static_cast<std::uint32_t>(std::ceil(travel / (0.5f * s.cell))) + 1;
     for (std::uint32_t j = 0; j < h; ++j) {
         for (std::uint32_t i = 0; i < w; ++i) {
@@ -77,7 +77,8 @@ void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
                 const std::size_t k = static_cast<std::size_t>(j) * w + i;
                 scratch.mask[k] = 1;
                 const double level = std::floor(static_cast<double>(bottom) / s.unit_height);
-                scratch.floor[k] = static_cast<std::int64_t>(std::clamp(level, -1.0e15, 1.0e15));
+                scratch.floor[k] = static_cast<std::int64_t>(
+                    std::clamp(level, -max_surface_level, max_surface_level));
             }
         }
     }

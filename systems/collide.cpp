@@ -5,15 +5,15 @@
 #include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
-#include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
 #include "systems/mass_ledger.hpp"
+#include "systems/narrow_phase.hpp"
 #include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
+#include "systems/source_versions.hpp"
 #include "systems/systems.hpp"
-#include "systems/wind.hpp"
 
 #include <glm/common.hpp>
 
@@ -23,8 +23,6 @@
 #include <cstring>
 #include <limits>
 #include <vector>
-
-#include <glm/common.hpp>
 
 namespace snow {
 
@@ -37,23 +35,27 @@ constexpr std::uint32_t block_shift = 3;
 
 /// World resource private to this file: per-slot "needs work" flags and
 /// candidate/removal lists (chunk c uses [c·flake_grain, ...)), sized to the
-/// pool capacity once; this tick's
-/// SnowSurface pointers for ColliderGrid::holder_surfaces; and, per 8×8 block
-/// of the occlusion map, the highest mesh top in it, so most flakes skip the
-/// (cache-missing) texel lookup. The summary is rebuilt when the map or the
-/// grid changes.
+/// pool capacity once; the SnowSurface of each ColliderGrid::holder_surfaces
+/// entry and of each cover (rebuilt from SourceVersions::solids and
+/// ::surfaces); and, per 8×8 block of the
+/// occlusion map, the highest mesh top in it, so most flakes skip the
+/// (cache-missing) texel lookup (rebuilt from the map's version and
+/// SourceVersions::solids).
 struct CollideScratch {
     std::vector<std::uint8_t> flags;
     std::vector<std::uint32_t> slots;
     std::vector<Removal> reasons;
     std::vector<std::uint32_t> counts;
     std::vector<const SnowSurface*> surfaces;
-    std::vector<const SnowSurface*> covers; ///< this tick's cover surfaces
+    std::vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
+    bool surfaces_built = false;
+    std::uint64_t surfaces_solids_version = 0;
+    std::uint64_t surfaces_version = 0;
     std::vector<float> mesh_block_top;
     std::uint32_t blocks_x = 0;
-    const OcclusionMap* blocks_map = nullptr;
+    bool blocks_built = false;
     std::uint64_t blocks_map_version = 0;
-    std::uint64_t blocks_grid_version = 0;
+    std::uint64_t blocks_solids_version = 0;
 };
 
 struct Context {
@@ -67,140 +69,43 @@ struct Context {
     std::uint32_t cover_count = 0;
     const Body* bodies = nullptr;
     std::uint32_t body_count = 0;
-    Aabb body_box{glm::vec3{std::numeric_limits<float>::infinity()},
-                  glm::vec3{-std::numeric_limits<float>::infinity()}}; ///< where bodies swept this tick
+    Aabb body_box{
+        glm::vec3{std::numeric_limits<float>::infinity()},
+        glm::vec3{-std::numeric_limits<float>::infinity()}}; ///< where bodies swept this tick
     Aabb bounds;
     float dt = 0.0f;
-    Integrator integrator = Integrator::explicit_euler;
-    glm::vec3 gravity{0.0f};
-    glm::vec3 wind{0.0f};
-    /// Speeds (m/s) at or above which a flake may leave the 3×3 cells around
-    /// it in one tick (y: through a tilted map lookup), so cell_reach cannot
-    /// clear it.
-    float fast_x = 0.0f, fast_y = 0.0f, fast_z = 0.0f;
+    /// Path lengths (m) per axis this tick at or above which a flake may have
+    /// started outside the 3×3 cells around it (y: through a tilted map
+    /// lookup), so cell_reach cannot clear it.
+    float far_x = 0.0f, far_y = 0.0f, far_z = 0.0f;
     CollideScratch* scratch = nullptr;
 };
 
-/// The flake may leave the 3×3 cells around it this tick, so the grid's
-/// reach tables cannot clear it (NaN counts as fast).
-bool is_fast(const Context& c, float vx, float vy, float vz) {
-    // All three tests, no short cut: the caller's loop stays branch-free.
-    const bool slow_x = std::abs(vx) < c.fast_x;
-    const bool slow_y = std::abs(vy) < c.fast_y;
-    const bool slow_z = std::abs(vz) < c.fast_z;
-    return !(slow_x & slow_y & slow_z);
+/// A path of this tick's displacement (dx, dy, dz) may have started past the
+/// 3×3 cells around its end, so the grid's reach tables cannot clear it (NaN
+/// counts as long).
+bool is_long(const Context& c, float dx, float dy, float dz) {
+    const float ax = std::abs(dx), ay = std::abs(dy), az = std::abs(dz);
+    return !(ax < c.far_x) | !(az < c.far_z) | !(ay < c.far_y);
+}
+
+/// The path (x0, y0, z0)→(x, y, z) comes near `b` (its bounding box meets
+/// the box). Selects only, so the flagging loop stays branch-free.
+bool path_near(const Aabb& b, float x, float y, float z, float x0, float y0, float z0) {
+    const bool meets_x = ((x < x0 ? x : x0) <= b.max.x) & ((x < x0 ? x0 : x) >= b.min.x);
+    const bool meets_y = ((y < y0 ? y : y0) <= b.max.y) & ((y < y0 ? y0 : y) >= b.min.y);
+    const bool meets_z = ((z < z0 ? z : z0) <= b.max.z) & ((z < z0 ? z0 : z) >= b.min.z);
+    return meets_x & meets_y & meets_z;
 }
 
 /// Result of the per-flake tests for a flake that is still inside the bounds.
 enum class Outcome : std::uint8_t { keep, sphere, bare };
 
-bool strictly_inside(const Aabb& b, const glm::vec3& p) {
-    return p.x > b.min.x && p.x < b.max.x && p.y > b.min.y && p.y < b.max.y && p.z > b.min.z &&
-           p.z < b.max.z;
-}
-
-/// Where along p0→p1 (t in [0, 1)) the segment enters the open sphere: 0 if
-/// p0 is already inside; false if it never does (swept, so fast flakes
-/// cannot jump over a sphere).
-bool sphere_entry(const glm::vec3& p0, const glm::vec3& p1, const GridSphere& s, float& t) {
-    const glm::vec3 d = p1 - p0;
-    const glm::vec3 w = p0 - s.center;
-    const float c = w.x * w.x + w.y * w.y + w.z * w.z - s.radius * s.radius;
-    if (c < 0.0f) {
-        t = 0.0f;
-        return true;
-    }
-    const float a = d.x * d.x + d.y * d.y + d.z * d.z;
-    const float b = w.x * d.x + w.y * d.y + w.z * d.z; // half the linear coefficient
-    const float disc = b * b - a * c;
-    if (!(a > 0.0f) || !(disc > 0.0f) || !(b < 0.0f)) {
-        return false; // still, grazing, or moving away
-    }
-    t = (-b - std::sqrt(disc)) / a;
-    return t < 1.0f;
-}
-
-/// A face of a box that a flake met, and the point on it.
-struct BoxContact {
-    int axis = 0;          ///< 0 x, 1 y, 2 z
-    bool max_side = false; ///< the face at box.max[axis] (outward normal +axis)
-    glm::vec3 at{0.0f};    ///< entry point (swept hit) or nearest face point
-    float t = 0.0f;        ///< where along the path: 0 when it started inside
-};
-
-/// The face through which the segment p0→p1 enters the open box (slab test),
-/// or, when p0 is already inside and p1 still is, the face nearest to p1.
-/// False when the segment never reaches the interior or is leaving it.
-bool box_contact(const Aabb& b, const glm::vec3& p0, const glm::vec3& p1, BoxContact& k) {
-    // The path's bounding box misses the open box: the usual case, no divisions.
-    const glm::vec3 lo = glm::min(p0, p1);
-    const glm::vec3 hi = glm::max(p0, p1);
-    if ((hi.x <= b.min.x) | (lo.x >= b.max.x) | (hi.y <= b.min.y) | (lo.y >= b.max.y) |
-        (hi.z <= b.min.z) | (lo.z >= b.max.z)) {
-        return false;
-    }
-    if (strictly_inside(b, p0)) {
-        if (!strictly_inside(b, p1)) {
-            return false;
-        }
-        // Nearest face; the top is tried first so a tie lands the flake.
-        const float dist[6] = {b.max.y - p1.y, p1.x - b.min.x, b.max.x - p1.x,
-                               p1.z - b.min.z, b.max.z - p1.z, p1.y - b.min.y};
-        const int axes[6] = {1, 0, 0, 2, 2, 1};
-        const bool maxes[6] = {true, false, true, false, true, false};
-        int best = 0;
-        for (int f = 1; f < 6; ++f) {
-            best = dist[f] < dist[best] ? f : best;
-        }
-        k.axis = axes[best];
-        k.max_side = maxes[best];
-        k.at = p1;
-        k.at[k.axis] = k.max_side ? b.max[k.axis] : b.min[k.axis];
-        k.t = 0.0f;
-        return true;
-    }
-    float enter = -std::numeric_limits<float>::infinity();
-    float exit = std::numeric_limits<float>::infinity();
-    int axis = -1;
-    bool max_side = false;
-    for (const int a : {1, 0, 2}) { // y first: a corner hit counts as a top hit
-        const float d = p1[a] - p0[a];
-        if (d == 0.0f) {
-            if (!(p0[a] > b.min[a] && p0[a] < b.max[a])) {
-                return false;
-            }
-            continue;
-        }
-        const float t_min = (b.min[a] - p0[a]) / d;
-        const float t_max = (b.max[a] - p0[a]) / d;
-        const float near = d > 0.0f ? t_min : t_max;
-        const float far = d > 0.0f ? t_max : t_min;
-        if (near > enter) {
-            enter = near;
-            axis = a;
-            max_side = d < 0.0f;
-        }
-        exit = std::min(exit, far);
-    }
-    if (axis < 0 || !(enter < exit) || !(enter < 1.0f) || !(exit > 0.0f)) {
-        return false;
-    }
-    k.axis = axis;
-    k.max_side = max_side;
-    k.at = p0 + (p1 - p0) * enter;
-    for (int a = 0; a < 3; ++a) {
-        k.at[a] = std::clamp(k.at[a], b.min[a], b.max[a]);
-    }
-    k.at[axis] = max_side ? b.max[axis] : b.min[axis];
-    k.t = enter;
-    return true;
-}
-
 /// One of the solid's surfaces covers (x, z).
 bool covered(const Context& c, std::uint32_t begin, std::uint32_t end, float x, float z) {
     for (std::uint32_t i = begin; i < end; ++i) {
         std::uint32_t ix = 0, iz = 0;
-        if (c.surfaces[i] != nullptr && c.surfaces[i]->cell_at(x, z, ix, iz)) {
+        if (c.surfaces[i]->cell_at(x, z, ix, iz)) {
             return true;
         }
     }
@@ -265,13 +170,17 @@ FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm
             }
             for (std::uint32_t n = g.cell_start[cell]; n < g.cell_start[cell + 1]; ++n) {
                 const std::uint32_t item = g.cell_items[n];
+                const bool sphere = (item & ColliderGrid::sphere_tag) != 0;
                 float t = 0.0f;
                 BoxContact k;
-                const bool hit =
-                    (item & ColliderGrid::sphere_tag) != 0
-                        ? sphere_entry(p0, p, g.spheres[item & ~ColliderGrid::sphere_tag], t)
-                        : box_contact(g.boxes[item].box, p0, p, k);
-                t = (item & ColliderGrid::sphere_tag) != 0 ? t : k.t;
+                bool hit = false;
+                if (sphere) {
+                    const GridSphere& s = g.spheres[item & ~ColliderGrid::sphere_tag];
+                    hit = sphere_entry(p0, p, s.center, s.radius, t);
+                } else {
+                    hit = box_contact(g.boxes[item].box, p0, p, k);
+                    t = k.t;
+                }
                 if (hit && t < best) { // strict: the first listed wins a tie
                     best = t;
                     first = FirstContact{item, k, t, true};
@@ -341,44 +250,10 @@ Outcome mesh_top(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3&
     return land_on_top(c, m->surf_begin, m->surf_end, glm::vec3{p.x, top, p.z}, p, v, moved);
 }
 
-/// Where relative path a→e (in a body's frame, centre at the origin) meets
-/// the body: the point on its surface the flake is put on.
-bool body_contact(const Body& b, const glm::vec3& a, const glm::vec3& e, glm::vec3& out) {
-    switch (b.shape) {
-    case BodyShape::box: {
-        BoxContact k;
-        if (!box_contact(Aabb{-b.half_extents, b.half_extents}, a, e, k)) {
-            return false;
-        }
-        out = k.at;
-        return true;
-    }
-    case BodyShape::capsule: {
-        const glm::vec3 core{0.0f, std::clamp(e.y, -b.half_height, b.half_height), 0.0f};
-        const glm::vec3 d = e - core;
-        const float len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-        if (!(len < b.radius)) {
-            return false;
-        }
-        out = core + (len > 0.0f ? d / len : glm::vec3{1.0f, 0.0f, 0.0f}) * b.radius;
-        return true;
-    }
-    case BodyShape::sphere:
-        break;
-    }
-    float t = 0.0f;
-    if (!sphere_entry(a, e, GridSphere{glm::vec3{0.0f}, b.radius}, t)) {
-        return false;
-    }
-    const glm::vec3 q = a + (e - a) * t;
-    const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-    out = (len > 0.0f ? q / len : glm::vec3{0.0f, 1.0f, 0.0f}) * b.radius;
-    return true;
-}
-
-/// Moving bodies, each tested in its own frame (its motion this tick taken
-/// out), so a body sweeping over a resting flake meets it too. A flake that
-/// enters is put on the body's surface and moves with it.
+/// Moving bodies, each tested in its own frame: the flake's path this tick,
+/// from its start (FlakePool::start_*) to p, less the body's motion from
+/// `previous` to `position`, so a body sweeping over a resting flake meets it
+/// too. A flake that enters is put on the body's surface and moves with it.
 void push_out_of_bodies(const Context& c, const glm::vec3& p0, glm::vec3& p, glm::vec3& v,
                         bool& moved) {
     for (std::uint32_t k = 0; k < c.body_count; ++k) {
@@ -397,21 +272,17 @@ Outcome resolve(const Context& c, std::size_t i) {
     FlakePool& f = *c.pool;
     glm::vec3 p{f.px[i], f.py[i], f.pz[i]};
     glm::vec3 v{f.vx[i], f.vy[i], f.vz[i]};
-    const float k = f.k_over_m[i];
-    const glm::vec3 p0{
-        integrate::path_start(c.integrator, p.x, v.x, k, c.gravity.x, c.wind.x, c.dt),
-        integrate::path_start(c.integrator, p.y, v.y, k, c.gravity.y, c.wind.y, c.dt),
-        integrate::path_start(c.integrator, p.z, v.z, k, c.gravity.z, c.wind.z, c.dt)};
+    const glm::vec3 p0{f.start_x[i], f.start_y[i], f.start_z[i]};
     bool moved = false, done = false;
     Outcome out = grid_colliders(c, p0, p, v, moved, done);
     if (out == Outcome::keep && !done && c.map != nullptr) {
         const ColliderGrid& g = *c.grid;
         const float mesh_reach = g.cell_mesh_reach[g.cell_z(p.z) * g.nx + g.cell_x(p.x)];
-        if (!(std::min(p.y, p0.y) > mesh_reach) || is_fast(c, v.x, v.y, v.z)) {
+        if (!(std::min(p.y, p0.y) > mesh_reach) || is_long(c, p.x - p0.x, p.y - p0.y, p.z - p0.z)) {
             out = mesh_top(c, p0, p, v, moved);
         }
     }
-    if (out == Outcome::keep && c.body_box.contains(p)) {
+    if (out == Outcome::keep && path_near(c.body_box, p.x, p.y, p.z, p0.x, p0.y, p0.z)) {
         push_out_of_bodies(c, p0, p, v, moved);
     }
     if (out == Outcome::keep && moved) { // untouched flakes leave their cache lines clean
@@ -425,9 +296,10 @@ Outcome resolve(const Context& c, std::size_t i) {
     return out;
 }
 
-/// Marks the flakes of [b, e) that may need work: out of bounds, fast, or low
-/// enough to meet a collider near them. Selects only, so it vectorises; most
-/// flakes are above everything near them and are never looked at again.
+/// Marks the flakes of [b, e) that may need work: out of bounds, on a long
+/// path, or low enough to meet a collider near them. Selects only, so it
+/// vectorises; most flakes are above everything near them and are never
+/// looked at again.
 void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __restrict flags) {
     const FlakePool& f = *c.pool;
     const ColliderGrid& g = *c.grid;
@@ -435,25 +307,22 @@ void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __
     const float* px = f.px.data();
     const float* py = f.py.data();
     const float* pz = f.pz.data();
-    const float* vx = f.vx.data();
-    const float* vy = f.vy.data();
-    const float* vz = f.vz.data();
+    const float* sx = f.start_x.data();
+    const float* sy = f.start_y.data();
+    const float* sz = f.start_z.data();
     const float* reach = g.cell_reach.data();
     const Aabb bb = c.bounds;
-    const float dt = c.dt;
     for (std::size_t i = b; i < e; ++i) {
         const float x = px[i], y = py[i], z = pz[i];
         // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
         const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];
-        const float y0 = y - vy[i] * dt;
+        const float y0 = sy[i];
         const bool low = !((y < y0 ? y : y0) > top);
-        const bool fast = is_fast(c, vx[i], vy[i], vz[i]);
-        const Aabb& near = c.body_box;
-        const bool body = (x >= near.min.x) & (x <= near.max.x) & (y >= near.min.y) &
-                          (y <= near.max.y) & (z >= near.min.z) & (z <= near.max.z);
-        flags[i - b] = (mass[i] != 0) & (!inside | low | fast | body) ? 1 : 0;
+        const bool far = is_long(c, x - sx[i], y - y0, z - sz[i]);
+        const bool body = path_near(c.body_box, x, y, z, sx[i], y0, sz[i]);
+        flags[i - b] = (mass[i] != 0) & (!inside | low | far | body) ? 1 : 0;
     }
 }
 
@@ -508,33 +377,43 @@ void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_
     c.scratch->counts[chunk] = n;
 }
 
-CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid& grid) {
+CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid& grid,
+                            const SourceVersions& versions) {
     auto* s = w.try_resource<CollideScratch>();
     if (s == nullptr) {
         s = &w.set_resource<CollideScratch>();
     }
-    // Sizes change only with the pool capacity or a grid rebuild: no steady-tick allocation.
+    // Sizes change only with the pool capacity: no steady-tick allocation.
     s->flags.resize(pool.capacity());
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
-    s->surfaces.resize(grid.holder_surfaces.size());
-    for (std::size_t i = 0; i < grid.holder_surfaces.size(); ++i) {
-        s->surfaces[i] = w.try_get<SnowSurface>(grid.holder_surfaces[i]);
-    }
-    s->covers.clear(); // capacity stays: no steady-tick allocation
-    if (const auto* covers = w.find_pool<SnowCover>()) {
-        for (const Entity e : covers->entities()) {
-            s->covers.push_back(&w.get<SnowSurface>(e));
+    // Surfaces (covers too) move in memory only when one is added or removed;
+    // the grid's list of them changes order only with the solids and the surfaces.
+    if (!s->surfaces_built || s->surfaces_solids_version != versions.solids ||
+        s->surfaces_version != versions.surfaces) {
+        s->surfaces.resize(grid.holder_surfaces.size());
+        for (std::size_t i = 0; i < grid.holder_surfaces.size(); ++i) {
+            s->surfaces[i] = &w.get<SnowSurface>(grid.holder_surfaces[i]);
         }
+        s->covers.clear();
+        if (const auto* covers = w.find_pool<SnowCover>()) {
+            for (const Entity e : covers->entities()) {
+                s->covers.push_back(&w.get<SnowSurface>(e));
+            }
+        }
+        s->surfaces_solids_version = versions.solids;
+        s->surfaces_version = versions.surfaces;
+        s->surfaces_built = true;
     }
     return *s;
 }
 
-/// Rebuilds the per-block highest mesh top when the map or the grid changed.
-void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const ColliderGrid& grid) {
-    if (s.blocks_map == &map && s.blocks_map_version == map.version &&
-        s.blocks_grid_version == grid.geometry_version && !s.mesh_block_top.empty()) {
+/// Rebuilds the per-block highest mesh top when the map or the meshes changed.
+void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const ColliderGrid& grid,
+                        const SourceVersions& versions) {
+    if (s.blocks_built && s.blocks_map_version == map.version &&
+        s.blocks_solids_version == versions.solids) {
         return;
     }
     const std::uint32_t block = 1u << block_shift;
@@ -551,17 +430,18 @@ void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const Collid
             }
         }
     }
-    s.blocks_map = &map;
     s.blocks_map_version = map.version;
-    s.blocks_grid_version = grid.geometry_version;
+    s.blocks_solids_version = versions.solids;
+    s.blocks_built = true;
 }
 
 } // namespace
 
 void collide_system(World& w) {
     FlakePool& pool = w.resource<FlakePool>();
+    const SourceVersions versions = source_versions(w);
     const ColliderGrid& grid = update_collider_grid(w);
-    CollideScratch& scratch = scratch_for(w, pool, grid);
+    CollideScratch& scratch = scratch_for(w, pool, grid, versions);
 
     Context c;
     c.pool = &pool;
@@ -569,7 +449,7 @@ void collide_system(World& w) {
     const auto* map = w.try_resource<OcclusionMap>();
     c.map = map != nullptr && map->width > 0 && !grid.meshes.empty() ? map : nullptr;
     if (c.map != nullptr) {
-        update_mesh_blocks(scratch, *c.map, grid);
+        update_mesh_blocks(scratch, *c.map, grid, versions);
         c.mesh_block_top = scratch.mesh_block_top.data();
         c.blocks_x = scratch.blocks_x;
     }
@@ -582,28 +462,21 @@ void collide_system(World& w) {
     if (const auto* bodies = w.find_pool<Body>(); bodies != nullptr && bodies->size() > 0) {
         c.bodies = bodies->components().data();
         c.body_count = static_cast<std::uint32_t>(bodies->size());
-        // Their swept boxes, grown by what a flake moves in a tick at 20 m/s
-        // (faster flakes are flagged as fast anyway).
+        // Where they swept this tick: a flake whose path misses this box meets none.
         for (const Body& b : bodies->components()) {
             const glm::vec3 r{b.shape == BodyShape::box ? b.half_extents : glm::vec3{b.reach()}};
             const glm::vec3 lift{0.0f, b.shape == BodyShape::capsule ? b.half_height : 0.0f, 0.0f};
-            const glm::vec3 margin = r + lift + glm::vec3{20.0f * c.dt};
-            c.body_box.min = glm::min(c.body_box.min, glm::min(b.previous, b.position) - margin);
-            c.body_box.max = glm::max(c.body_box.max, glm::max(b.previous, b.position) + margin);
+            c.body_box.min = glm::min(c.body_box.min, glm::min(b.previous, b.position) - r - lift);
+            c.body_box.max = glm::max(c.body_box.max, glm::max(b.previous, b.position) + r + lift);
         }
     }
-    c.integrator = cfg.integrator;
-    c.gravity = cfg.gravity;
-    if (const auto* wind = w.try_resource<Wind>()) {
-        c.wind = wind->current;
-    }
-    // 0.9 of a cell per tick leaves margin for the rounding of p - v·dt.
-    c.fast_x = 0.9f * grid.cell_size_x / c.dt;
-    c.fast_z = 0.9f * grid.cell_size_z / c.dt;
+    // 0.9 of a cell leaves margin for the rounding of the cell indices.
+    c.far_x = 0.9f * grid.cell_size_x;
+    c.far_z = 0.9f * grid.cell_size_z;
     const float shear =
         c.map != nullptr ? std::max(std::abs(c.map->shear_x), std::abs(c.map->shear_z)) : 0.0f;
-    c.fast_y = shear > 0.0f ? 0.9f * std::min(grid.cell_size_x, grid.cell_size_z) / (shear * c.dt)
-                            : std::numeric_limits<float>::infinity();
+    c.far_y = shear > 0.0f ? 0.9f * std::min(grid.cell_size_x, grid.cell_size_z) / shear
+                           : std::numeric_limits<float>::infinity();
     c.scratch = &scratch;
 
     // Slots past slot_end were never alive: no work there.

@@ -1,10 +1,10 @@
 // collider_grid: the cell index of box and sphere colliders [WF §8].
-// Built only when GeometryVersion changes, so its allocations never happen in
-// a steady tick.
+// Built only when the solids or the surfaces change (source_versions.hpp), so
+// its allocations never happen in a steady tick.
 #include "systems/collider_grid.hpp"
 
 #include "systems/colliders.hpp"
-#include "systems/occlusion.hpp"
+#include "systems/limits.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 
@@ -18,10 +18,6 @@ namespace snow {
 namespace {
 
 constexpr float neg_inf = -std::numeric_limits<float>::infinity();
-
-bool finite3(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 /// (owner bits, creation order, surface) for every surface on a SnowHolder solid.
 using OwnedSurface = std::tuple<std::uint32_t, std::uint32_t, Entity>;
@@ -62,15 +58,11 @@ void collect(World& w, ColliderGrid& grid) {
     grid.holder_surfaces.clear();
     const std::vector<OwnedSurface> owned = owned_surfaces(w);
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) {
-        if (finite3(b.box.min) && finite3(b.box.max)) {
-            const auto [sb, se] = take_surfaces(grid, owned, e.bits);
-            grid.boxes.push_back(GridBox{b.box, e.bits, sb, se});
-        }
+        const auto [sb, se] = take_surfaces(grid, owned, e.bits);
+        grid.boxes.push_back(GridBox{b.box, e.bits, sb, se});
     });
     w.each<SphereCollider>([&](Entity, const SphereCollider& s) {
-        if (finite3(s.center) && std::isfinite(s.radius) && s.radius > 0.0f) {
-            grid.spheres.push_back(GridSphere{s.center, s.radius});
-        }
+        grid.spheres.push_back(GridSphere{s.center, s.radius});
     });
     w.each<MeshCollider>([&](Entity e, const MeshCollider&) {
         const auto [sb, se] = take_surfaces(grid, owned, e.bits);
@@ -81,11 +73,11 @@ void collect(World& w, ColliderGrid& grid) {
 }
 
 /// Cells along an extent: as fine as min_cell_size allows (at most
-/// max_cells_per_side), so the reach of a cell's neighbourhood stays tight.
+/// max_collider_cells_per_side), so the reach of a cell's neighbourhood stays tight.
 std::uint32_t cells_along(float extent) {
     const double n = std::floor(extent / ColliderGrid::min_cell_size);
     return static_cast<std::uint32_t>(
-        std::clamp(n, 1.0, static_cast<double>(ColliderGrid::max_cells_per_side)));
+        std::clamp(n, 1.0, static_cast<double>(max_collider_cells_per_side)));
 }
 
 /// Calls fn(cell) for every cell the XZ rectangle [x0, x1] × [z0, z1] overlaps.
@@ -161,17 +153,13 @@ void reach(const World& w, ColliderGrid& g) {
         const auto& tris = w.get<MeshCollider>(Entity{m.entity}).triangles;
         for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
             const glm::vec3 &a = tris[i], &b = tris[i + 1], &c = tris[i + 2];
-            if (finite3(a) && finite3(b) && finite3(c)) {
-                raise(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}),
-                      std::min({a.z, b.z, c.z}), std::max({a.z, b.z, c.z}),
-                      std::max({a.y, b.y, c.y}));
-            }
+            raise(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), std::min({a.z, b.z, c.z}),
+                  std::max({a.z, b.z, c.z}), std::max({a.y, b.y, c.y}));
         }
         for (std::uint32_t i = m.surf_begin; i < m.surf_end; ++i) {
-            glm::vec3 q[4];
-            if (surface_base_corners(w.get<SnowSurface>(g.holder_surfaces[i]), q)) {
-                raise(q[0].x, q[2].x, q[0].z, q[2].z, std::max({q[0].y, q[1].y, q[2].y, q[3].y}));
-            }
+            const std::array<glm::vec3, 4> q =
+                surface_base_corners(w.get<SnowSurface>(g.holder_surfaces[i]));
+            raise(q[0].x, q[2].x, q[0].z, q[2].z, std::max({q[0].y, q[1].y, q[2].y, q[3].y}));
         }
     }
     dilate(g, mesh, g.cell_mesh_reach);
@@ -181,9 +169,8 @@ void reach(const World& w, ColliderGrid& g) {
     dilate(g, mesh, g.cell_reach);
 }
 
-void rebuild(World& w, ColliderGrid& g, std::uint64_t version, const Aabb& bounds) {
+void rebuild(World& w, ColliderGrid& g, const Aabb& bounds) {
     collect(w, g);
-    g.bounds = bounds;
     g.x0 = bounds.min.x;
     g.z0 = bounds.min.z;
     const glm::vec3 ext = bounds.size();
@@ -195,12 +182,6 @@ void rebuild(World& w, ColliderGrid& g, std::uint64_t version, const Aabb& bound
     g.inv_cell_z = ext.z > 0.0f ? 1.0f / g.cell_size_z : 0.0f;
     bin(g);
     reach(w, g);
-    g.geometry_version = version;
-    g.built = true;
-}
-
-bool same(const Aabb& a, const Aabb& b) {
-    return a.min == b.min && a.max == b.max;
 }
 
 } // namespace
@@ -217,11 +198,12 @@ ColliderGrid& update_collider_grid(World& w) {
     if (g == nullptr) {
         g = &w.set_resource<ColliderGrid>();
     }
-    const auto* gv = w.try_resource<GeometryVersion>();
-    const std::uint64_t version = gv != nullptr ? gv->version : 0;
-    const Aabb& bounds = w.resource<SimConfig>().bounds;
-    if (!g->built || g->geometry_version != version || !same(g->bounds, bounds)) {
-        rebuild(w, *g, version, bounds);
+    const SourceVersions v = source_versions(w);
+    if (!g->built || g->solids_version != v.solids || g->surfaces_version != v.surfaces) {
+        rebuild(w, *g, w.resource<SimConfig>().bounds);
+        g->solids_version = v.solids;
+        g->surfaces_version = v.surfaces;
+        g->built = true;
     }
     return *g;
 }

@@ -2,13 +2,14 @@
 /// @brief A uniform XZ grid over the simulation bounds that lists the box and
 /// sphere colliders overlapping each cell, so a flake is tested only against
 /// the colliders near it (the cell index [WF §8] proposes). Rebuilt from
-/// the World whenever GeometryVersion changes; it is a World resource so the
-/// cache lives and dies with its World.
+/// the World whenever the solids or the surfaces change (source_versions.hpp);
+/// it is a World resource so the cache lives and dies with its World.
 #pragma once
 
 #include "ecs/entity.hpp"
 #include "ecs/world.hpp"
 #include "systems/geometry.hpp"
+#include "systems/source_versions.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -37,17 +38,16 @@ struct GridMesh {
 };
 
 /// World resource. Cells are as fine as min_cell_size allows (at most
-/// max_cells_per_side per axis). Cell lists are compressed rows: the items of
+/// max_collider_cells_per_side per axis, limits.hpp). Cell lists are compressed rows: the items of
 /// cell c are cell_items[cell_start[c], cell_start[c + 1]); an item is a box
 /// index, or a sphere index with sphere_tag set. Spheres come first in each cell.
 struct ColliderGrid {
     static constexpr std::uint32_t sphere_tag = 0x80000000u;
-    static constexpr std::uint32_t max_cells_per_side = 256;
-    static constexpr float min_cell_size = 0.25f; ///< m; smaller cells flag too many flakes as fast
+    static constexpr float min_cell_size = 0.25f; ///< m; smaller cells mark too many paths long
 
     bool built = false;
-    std::uint64_t geometry_version = 0; ///< GeometryVersion::version it was built from
-    Aabb bounds;                        ///< SimConfig::bounds it was built over
+    std::uint64_t solids_version = 0;   ///< SourceVersions::solids it was built from
+    std::uint64_t surfaces_version = 0; ///< SourceVersions::surfaces it was built from
     float x0 = 0.0f, z0 = 0.0f;
     float inv_cell_x = 1.0f, inv_cell_z = 1.0f;   ///< cells per metre
     float cell_size_x = 1.0f, cell_size_z = 1.0f; ///< m
@@ -87,8 +87,8 @@ struct ColliderGrid {
 };
 
 /// Returns the World's ColliderGrid (created if missing), rebuilt first if
-/// GeometryVersion or SimConfig::bounds changed since it was built. Colliders
-/// with non-finite numbers are left out.
+/// the solids or the surfaces changed since it was built (SimConfig::bounds
+/// is fixed when the Simulation is made).
 ColliderGrid& update_collider_grid(World& w);
 
 } // namespace snow

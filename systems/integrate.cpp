@@ -2,9 +2,11 @@
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //
-// With a declared wind field each flake drags towards the field's wind at
-// its start-of-tick position (trilinear, WindSampler::at) instead of the one
-// global wind; the pass is the same loop with that read inside.
+// Each flake moves from FlakePool::start_* (this tick's path start, swapped
+// in from the positions) into px/py/pz: the start is produced here, once, for
+// collide and deposit. With a declared wind field each flake drags towards
+// the field's wind at its path start (trilinear, WindSampler::at) instead of
+// the one global wind; the pass is the same loop with that read inside.
 //
 // The guarded pass is one branch-free loop over distinct (__restrict) arrays
 // so GCC and Clang vectorise it (selects need -fno-trapping-math, set
@@ -54,6 +56,9 @@ struct GlobalWind {
 
 /// Base pointers of the pool arrays one pass reads and writes.
 struct Lanes {
+    const float* sx; ///< path starts (the positions at the start of the tick)
+    const float* sy;
+    const float* sz;
     float* px;
     float* py;
     float* pz;
@@ -70,20 +75,22 @@ inline float blend(std::uint32_t mask, float a, float b) {
                                 (std::bit_cast<std::uint32_t>(b) & ~mask));
 }
 
-/// The rule for every alive slot of [0, n) whose c·dt <= limit; returns how
-/// many alive slots were over the limit (left untouched for the exact pass).
-/// The arrays are distinct (__restrict): that spares GCC the 20 run-time alias
-/// checks it would otherwise need (it gives up past 10 and stays scalar), and
-/// Clang the same.
+/// The rule for every alive slot of [0, n) whose c·dt <= limit; every other
+/// slot keeps its start. Returns how many alive slots were over the limit
+/// (left at their start for the exact pass). The arrays are distinct
+/// (__restrict): that spares GCC the run-time alias checks it would otherwise
+/// need (it gives up past 10 and stays scalar), and Clang the same.
 template <AxisRule rule, typename Air>
-std::uint32_t guarded_lanes(float* __restrict px, float* __restrict py, float* __restrict pz,
-                            float* __restrict vx, float* __restrict vy, float* __restrict vz,
-                            const float* __restrict kom, const std::uint32_t* __restrict mass,
-                            std::size_t n, const Params q, const Air air, const float limit) {
+std::uint32_t guarded_lanes(const float* __restrict sx, const float* __restrict sy,
+                            const float* __restrict sz, float* __restrict px, float* __restrict py,
+                            float* __restrict pz, float* __restrict vx, float* __restrict vy,
+                            float* __restrict vz, const float* __restrict kom,
+                            const std::uint32_t* __restrict mass, std::size_t n, const Params q,
+                            const Air air, const float limit) {
     std::uint32_t stiff = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const float c = kom[i];
-        const float x0 = px[i], y0 = py[i], z0 = pz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
+        const float x0 = sx[i], y0 = sy[i], z0 = sz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
         float wx, wy, wz;
         air.at(x0, y0, z0, wx, wy, wz);
@@ -111,8 +118,8 @@ std::uint32_t guarded_lanes(float* __restrict px, float* __restrict py, float* _
 template <AxisRule rule, typename Air>
 std::uint32_t guarded_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air,
                            float limit) {
-    return guarded_lanes<rule>(l.px, l.py, l.pz, l.vx, l.vy, l.vz, l.kom, l.mass, n, q, air,
-                               limit);
+    return guarded_lanes<rule>(l.sx, l.sy, l.sz, l.px, l.py, l.pz, l.vx, l.vy, l.vz, l.kom, l.mass,
+                               n, q, air, limit);
 }
 
 /// Exact update for the alive slots of [0, n) a guarded pass skipped.
@@ -145,8 +152,8 @@ template <typename Air>
 std::uint32_t integrate_chunk(const IntegratePass& p, const Air& air, std::size_t b,
                               std::size_t e) {
     const Lanes& a = p.lanes;
-    const Lanes l{a.px + b, a.py + b, a.pz + b,  a.vx + b,
-                  a.vy + b, a.vz + b, a.kom + b, a.mass + b};
+    const Lanes l{a.sx + b, a.sy + b, a.sz + b, a.px + b,  a.py + b,  a.pz + b,
+                  a.vx + b, a.vy + b, a.vz + b, a.kom + b, a.mass + b};
     const std::size_t n = e - b;
     // Rules without a stability limit get an infinite one.
     constexpr float none = 3.0e38f;
@@ -199,11 +206,18 @@ void integrate_system(World& w) {
     if (stiff.size() < JobPool::chunk_count(f.capacity(), flake_grain)) {
         stiff.resize(JobPool::chunk_count(f.capacity(), flake_grain)); // once per pool size
     }
-    // Slots past slot_end were never alive: no work there.
+    // This tick's positions become its path starts; the pass writes the new
+    // positions over the old starts (every slot below slot_end). Slots past
+    // slot_end were never alive: no work there, and both arrays hold their
+    // reset values.
+    f.px.swap(f.start_x);
+    f.py.swap(f.start_y);
+    f.pz.swap(f.start_z);
     const std::size_t n = f.slot_end;
     const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
-    const IntegratePass pass{{f.px.data(), f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(),
-                              f.vz.data(), f.k_over_m.data(), f.mass_units.data()},
+    const IntegratePass pass{{f.start_x.data(), f.start_y.data(), f.start_z.data(), f.px.data(),
+                              f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(), f.vz.data(),
+                              f.k_over_m.data(), f.mass_units.data()},
                              {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt},
                              w.try_resource<WindField>(),
                              cfg.integrator,

@@ -7,8 +7,6 @@
 /// integrate system, the accuracy benchmark and the tests.
 #pragma once
 
-#include "systems/sim_config.hpp"
-
 #include <cmath>
 
 namespace snow::integrate {
@@ -60,36 +58,6 @@ inline void rk4(float& p, float& v, float c, float g, float w, float dt) {
 inline constexpr float explicit_limit = 1.0f;
 inline constexpr float rk4_limit = 2.5f;
 inline constexpr float automatic_limit = 0.5f;
-
-/// True when the rule `kind` moved a flake with this c·dt by p += v_new·dt,
-/// so p − v·dt is where its tick started.
-inline bool moves_by_end_velocity(Integrator kind, float c_dt) {
-    switch (kind) {
-    case Integrator::explicit_euler:
-        return c_dt <= explicit_limit;
-    case Integrator::automatic:
-        return c_dt <= automatic_limit;
-    case Integrator::semi_implicit_euler:
-        return true;
-    default:
-        return false;
-    }
-}
-
-/// Where a flake's tick started on one axis, from its end state, so swept
-/// tests follow the path the rule really took. The exact and RK4 rules move
-/// by the mean velocity: invert the exact update (RK4 agrees with it to
-/// O(dt^5)). Past c·dt = rk4_limit the inversion would amplify rounding by
-/// e^(c·dt), and the flake is at terminal speed anyway: p − v·dt.
-inline float path_start(Integrator kind, float p, float v, float c, float g, float w, float dt) {
-    if (moves_by_end_velocity(kind, c * dt) || c <= 0.0f || c * dt > rk4_limit) {
-        return p - v * dt;
-    }
-    const float vt = w + g / c;
-    const float decay = std::exp(-c * dt);
-    const float gap0 = (v - vt) / decay;
-    return p - vt * dt - gap0 * (1.0f - decay) / c;
-}
 
 /// Closed-form state at time t from (p0, v0): the reference for accuracy.
 inline void exact_at(double& p, double& v, double p0, double v0, double c, double g, double w,

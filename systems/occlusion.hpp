@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ecs/entity.hpp"
-#include "ecs/world.hpp"
+#include "systems/source_versions.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -16,20 +16,29 @@ namespace snow {
 
 /// World resource: settings. Without it, no occlusion system runs.
 struct OcclusionCamera {
-    std::uint32_t resolution = 256; ///< texels per side over the simulation bounds
-    float tilt = 0.0f;              ///< radians; projection leans along the wind
+    /// Texels per side over the simulation bounds (at most max_occlusion_resolution).
+    std::uint32_t resolution = 256;
+    float tilt = 0.0f; ///< radians; projection leans along the wind (|tilt| <= max_occlusion_tilt)
 };
 
 /// World resource: the map the occlusion system writes, and what others read.
-/// Texel (i, j) covers x0 + i·texel .. +texel, z0 + j·texel .. +texel.
+/// Texel (i, j) covers x0 + i·texel .. +texel, z0 + j·texel .. +texel. Not a
+/// pure function of the current sources (source_versions.hpp): saved,
+/// restored and hashed.
 struct OcclusionMap {
     float x0 = 0.0f, z0 = 0.0f, texel = 1.0f;
     std::uint32_t width = 0, height = 0;
     std::vector<float> top_y;          ///< highest geometry (m); -inf where none
     std::vector<std::uint32_t> top_id; ///< Entity::bits of that geometry; 0 where none
-    std::uint64_t version = 0;         ///< bumped on every refresh
-    // What the map was built from; a change triggers a refresh.
-    std::uint64_t geometry_version = ~0ull;
+    /// Bumped whenever the texels are rewritten (a refresh or a restore), for
+    /// the caches built on the map; it never goes back.
+    std::uint64_t version = 0;
+    bool built = false; ///< false until the first refresh
+    /// The source versions the texels were rasterised from; while they differ
+    /// from the world's the map is stale, and the end of the tick refreshes it.
+    SourceVersions built_from;
+    /// The wind direction (radians) the projection leans along, held with
+    /// hysteresis; occlusion_no_lean when it does not lean. A change refreshes.
     float wind_angle = 0.0f;
     // Projection: (x, y, z) falls in the texel of (x + shear_x·y, z + shear_z·y),
     // the flake path of a tilted camera leaning downwind (0 when not tilted).
@@ -66,19 +75,5 @@ struct SnowSurface;
 /// is resized to the cell count (reuse it to avoid allocation).
 void surface_exposure(const OcclusionMap& map, const SnowSurface& s, std::vector<float>& out,
                       float tolerance = occlusion_tolerance);
-/// Writes the scene's geometry into `map` along its projection: per texel
-/// the highest box, sphere, mesh or declared surface top and its entity
-/// (covers are snow, not geometry). Lays the texels out anew for the map's
-/// width × height (-inf / 0 where nothing is).
-void rasterise_geometry(const World& w, OcclusionMap& map);
-/// Corners of a surface's bare top as the plane through its corner cells (what
-/// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1). False for an empty surface.
-[[nodiscard]] bool surface_base_corners(const SnowSurface& s, glm::vec3 (&corners)[4]);
-
-/// World resource: bump `version` whenever colliders or surfaces are added,
-/// removed or moved, so the occlusion map refreshes.
-struct GeometryVersion {
-    std::uint64_t version = 0;
-};
 
 } // namespace snow

@@ -321,7 +321,7 @@ void redistribute_system(World& w) {
         scratch = &w.set_resource<RedistributeScratch>();
     }
     for (SnowSurface& s : surfaces) {
-        if (s.dirty_empty() || s.nx == 0 || s.nz == 0) {
+        if (s.dirty_empty()) {
             continue;
         }
         const std::size_t tiles = static_cast<std::size_t>(s.tiles_x()) * s.tiles_z();

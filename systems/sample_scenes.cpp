@@ -61,6 +61,73 @@ FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n) {
     return f;
 }
 
+std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
+    YardOptions o;
+    o.threads = threads;
+    o.ground_cells = 64;
+    o.max_flakes = 60000;
+    o.prefill = 40000;
+    o.emitter_rate = 6000.0f;
+    auto sim = make_yard(o);
+    Wind wind;
+    wind.base = wind.current = {2.0f, 0.0f, 0.5f};
+    wind.walk = 1.5f;
+    wind.max_deviation = 2.0f;
+    wind.gust_strength = 3.0f;
+    wind.gust_rate = 0.8f;
+    wind.gust_duration = 0.7f;
+    sim->set_wind(wind);
+    const glm::vec3 a{-6.0f, 2.0f, 1.0f}, b{-2.0f, 2.0f, 1.0f}, c{-2.0f, 2.5f, 5.0f},
+        d{-6.0f, 2.5f, 5.0f};
+    const Entity shelter = sim->add_mesh_collider({a, b, c, a, c, d});
+    SurfaceDef roof;
+    roof.x0 = a.x;
+    roof.z0 = a.z;
+    roof.size_x = b.x - a.x;
+    roof.size_z = d.z - a.z;
+    roof.cell = 0.1f;
+    roof.base_y = a.y;
+    roof.slope_z = (d.y - a.y) / (d.z - a.z);
+    roof.edge_limit = 0.0005f;
+    sim->add_surface(roof, shelter);
+    sim->add_mesh_collider({{3.0f, 1.0f, -6.0f}, {6.0f, 1.5f, -6.0f}, {4.5f, 2.5f, -3.0f}});
+    OcclusionCamera cam;
+    cam.resolution = 96;
+    cam.tilt = 0.5f;
+    sim->set_occlusion(cam);
+    sim->add_sphere({4.5f, 0.2f, 5.0f}, 0.7f); // a boulder under a snow cover
+    CoverDef cover;
+    cover.min_x = 3.0f;
+    cover.min_z = 3.5f;
+    cover.max_x = 7.0f;
+    cover.max_z = 7.0f;
+    cover.cell = 0.1f;
+    sim->add_cover(cover);
+    // A snowball pressed into the ground doing laps: it takes the snow it rolls over.
+    BodyDef ball;
+    ball.radius = 0.3f;
+    ball.position = {-6.0f, 0.2f, -6.0f};
+    ball.snowball = true;
+    ball.motion.waypoints = {
+        {-6.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -3.0f}, {-6.0f, 0.2f, -3.0f}};
+    ball.motion.speed = 1.5f;
+    sim->add_body(ball);
+    BodyDef walker; // a capsule lapping through the ground's snow: trails and rims
+    walker.shape = BodyShape::capsule;
+    walker.radius = 0.25f;
+    walker.half_height = 0.6f;
+    walker.on_ground = true;
+    walker.motion =
+        BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}}, 1.5f, true};
+    sim->add_body(walker);
+    WindFieldDef field; // a coarse field the buildings shape
+    field.cells_x = field.cells_z = 16;
+    field.cells_y = 8;
+    field.update_every = 2;
+    sim->set_wind_field(field);
+    return sim;
+}
+
 void prefill_flakes(Simulation& sim, std::uint32_t count) {
     for (std::uint32_t n = 0; n < count; ++n) {
         if (!sim.place_flake(prefill_flake(sim.config(), n))) {

@@ -27,6 +27,15 @@ struct YardOptions {
 /// roof, a sphere (snowman), steady wind along +x, an emitter.
 [[nodiscard]] std::unique_ptr<Simulation> make_yard(const YardOptions& o = {});
 
+/// The yard with every kind of hidden state switched on, for the tests of
+/// snapshots and allocation: 40000 prefilled flakes (more than two chunks, so
+/// two threads share the work) and a heavy emitter; a walking, gusting wind;
+/// a mesh shelter whose snow-holding roof spills almost at once and a bare
+/// mesh tent, both seen through a tilted sky camera whose lean follows the
+/// wind; a snow cover over a boulder; a snowball and a capsule walker doing
+/// laps through the ground's snow; a coarse wind field.
+[[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads);
+
 /// Flake number `n` of prefill_flakes: uniform in the upper half of the
 /// bounds, falling at 1 m/s, mass and place deterministic in the seed.
 [[nodiscard]] FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n);

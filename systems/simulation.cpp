@@ -1,9 +1,9 @@
 #include "systems/simulation.hpp"
 
 #include "ecs/job_pool.hpp"
-#include "ecs/state_hash.hpp"
 #include "systems/colliders.hpp"
 #include "systems/jobs.hpp"
+#include "systems/limits.hpp"
 #include "systems/systems.hpp"
 #include "systems/validation.hpp"
 #include "systems/wind_field_solver.hpp"
@@ -17,39 +17,8 @@ namespace snow {
 
 namespace {
 
-/// Every component T with its entity, in pool order (Simulation::save).
-template <typename T>
-void copy_components(const World& w, std::vector<std::pair<Entity, T>>& out) {
-    w.each<T>([&](Entity e, const T& c) { out.emplace_back(e, c); });
-}
-
-/// Throws unless every saved entity still has its T (Simulation::restore
-/// checks all before it changes anything).
-template <typename T>
-void require_components(const World& w, const std::vector<std::pair<Entity, T>>& saved,
-                        const char* what) {
-    for (const auto& [e, c] : saved) {
-        if (!w.has<T>(e)) {
-            throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
-                                  what + " missing)");
-        }
-    }
-}
-
-template <typename T>
-void put_components(World& w, const std::vector<std::pair<Entity, T>>& saved) {
-    for (const auto& [e, c] : saved) {
-        w.get<T>(e) = c;
-    }
-}
-
 bool flakes_alive(const World& w) {
     return w.resource<FlakePool>().alive > 0;
-}
-
-bool same_grid(const WindField& a, const WindField& b) {
-    return a.n[0] == b.n[0] && a.n[1] == b.n[1] && a.n[2] == b.n[2] && a.origin == b.origin &&
-           a.inv_cell == b.inv_cell;
 }
 
 /// The T of entity `e`; throws SimulationError naming `field` when `e` is
@@ -71,7 +40,7 @@ Simulation::Simulation(const SimConfig& config) {
     world_.set_resource<SimClock>();
     world_.set_resource<MassLedger>();
     world_.set_resource<SimCounters>();
-    world_.set_resource<GeometryVersion>();
+    world_.set_resource<SourceVersions>();
     world_.set_resource<FlakePool>().reset(config.max_flakes);
     jobs_ = std::make_unique<JobPool>(config.threads);
     world_.set_resource<Jobs>(Jobs{jobs_.get()});
@@ -95,10 +64,6 @@ void Simulation::build_schedule() {
     schedule_.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule_.add("spill", spill_system, {needs<SnowSurface>()});
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
-}
-
-void Simulation::bump_geometry() {
-    ++world_.resource<GeometryVersion>().version;
 }
 
 Entity Simulation::add_emitter(const Emitter& e) {
@@ -147,7 +112,7 @@ Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {
     if (!owner.is_null()) {
         world_.add<SnowHolder>(owner);
     }
-    bump_geometry();
+    ++world_.resource<SourceVersions>().surfaces;
     return id;
 }
 
@@ -158,6 +123,7 @@ Entity Simulation::add_cover(const CoverDef& def) {
     SnowCover cover;
     cover.drop_limit = def.drop_limit;
     world_.add<SnowCover>(id, std::move(cover));
+    ++world_.resource<SourceVersions>().surfaces;
     return id;
 }
 
@@ -225,7 +191,7 @@ Entity Simulation::add_box(const Aabb& box) {
     throw_if(validate(box));
     const Entity id = world_.create();
     world_.add<BoxCollider>(id, BoxCollider{box});
-    bump_geometry();
+    ++world_.resource<SourceVersions>().solids;
     return id;
 }
 
@@ -238,7 +204,7 @@ void Simulation::move_box(Entity box_collider, const Aabb& box) {
     }
     throw_if(validate(box));
     c.box = box;
-    bump_geometry();
+    ++world_.resource<SourceVersions>().solids;
 }
 
 Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
@@ -248,7 +214,7 @@ Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
     throw_if(e);
     const Entity id = world_.create();
     world_.add<SphereCollider>(id, SphereCollider{center, radius});
-    bump_geometry();
+    ++world_.resource<SourceVersions>().solids;
     return id;
 }
 
@@ -265,23 +231,27 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
     const Entity id = world_.create();
     world_.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
     // Flakes meet meshes only through the sky map [SKY]: a mesh needs one.
+    auto& versions = world_.resource<SourceVersions>();
     if (!world_.has_resource<OcclusionCamera>()) {
         world_.set_resource<OcclusionCamera>();
+        ++versions.occlusion;
     }
-    bump_geometry();
+    ++versions.solids;
     return id;
 }
 
 void Simulation::set_occlusion(const OcclusionCamera& cam) {
     Invalid e;
-    if (cam.resolution < 1 || cam.resolution > 4096) {
-        check::fail(e, "occlusion.resolution", "in [1, 4096]", cam.resolution);
+    if (cam.resolution < 1 || cam.resolution > max_occlusion_resolution) {
+        check::fail(e, "occlusion.resolution",
+                    "in [1, " + std::to_string(max_occlusion_resolution) + "]", cam.resolution);
     }
     check::finite(e, "occlusion.tilt", cam.tilt);
-    check::at_most(e, "occlusion.tilt (magnitude, radians)", std::abs(cam.tilt), 1.2);
+    check::at_most(e, "occlusion.tilt (magnitude, radians)", std::abs(cam.tilt),
+                   max_occlusion_tilt);
     throw_if(e);
     world_.set_resource<OcclusionCamera>(cam);
-    bump_geometry();
+    ++world_.resource<SourceVersions>().occlusion;
 }
 
 void Simulation::set_fog(const Fog& fog) {
@@ -303,6 +273,11 @@ void Simulation::remove(Entity e) {
         throw SimulationError("remove(entity)", "is a stale or null handle");
     }
     auto& ledger = world_.resource<MassLedger>();
+    auto& versions = world_.resource<SourceVersions>();
+    if (world_.has<BoxCollider>(e) || world_.has<SphereCollider>(e) ||
+        world_.has<MeshCollider>(e)) {
+        ++versions.solids;
+    }
     // Surfaces lying on a removed solid go with it; their snow leaves the books as removed.
     std::vector<Entity> doomed{e};
     world_.each<SurfaceOf>([&](Entity s, const SurfaceOf& of) {
@@ -310,16 +285,18 @@ void Simulation::remove(Entity e) {
             doomed.push_back(s);
         }
     });
+    bool surfaces_gone = false;
     for (const Entity d : doomed) {
         if (const auto* s = world_.try_get<SnowSurface>(d)) {
             ledger.removed_surface += s->settled_units();
+            surfaces_gone = true;
         }
         if (const auto* b = world_.try_get<Body>(d)) {
             ledger.removed_surface += b->carried; // a snowball goes with its snow
         }
         world_.destroy(d);
     }
-    bump_geometry();
+    versions.surfaces += surfaces_gone ? 1 : 0;
 }
 
 std::optional<std::uint32_t> Simulation::place_flake(const FlakeSpec& flake) {
@@ -394,57 +371,6 @@ void Simulation::run(std::uint64_t ticks) {
     }
 }
 
-std::uint64_t Simulation::state_hash() const {
-    StateHasher h;
-    h.value(world_.resource<SimClock>().tick);
-    const auto& ledger = world_.resource<MassLedger>();
-    h.value(ledger.spawned);
-    h.value(ledger.removed());
-    const FlakePool& f = world_.resource<FlakePool>();
-    for (std::uint32_t i = 0; i < f.capacity(); ++i) {
-        if (!f.is_alive(i)) {
-            continue;
-        }
-        h.value(i);
-        for (const auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
-            h.value((*a)[i]);
-        }
-        h.value(f.mass_units[i]);
-    }
-    h.span(std::span<const std::uint32_t>(f.free_stack));
-    world_.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
-        h.value(e.bits);
-        h.span(std::span<const std::uint32_t>(s.snow));
-    });
-    if (const auto* w = world_.try_resource<Wind>()) {
-        h.value(w->current);
-        h.value(w->deviation);
-        h.value(w->gust_left);
-    }
-    world_.each<Body>([&](Entity e, const Body& b) {
-        h.value(e.bits);
-        h.value(b.position);
-        h.value(b.previous);
-        h.value(b.radius);
-        h.value(b.velocity);
-        h.value(b.has_target);
-        h.value(b.target);
-        h.value(b.segment);
-        h.value(b.along);
-        h.value(b.carried);
-    });
-    if (const auto* f = world_.try_resource<WindField>()) {
-        for (const auto& v : f->velocity) {
-            h.span(std::span<const float>(v));
-        }
-        h.span(std::span<const float>(f->pressure));
-        h.value(f->inflow);
-        h.value(f->wait);
-        h.value(f->steps);
-    }
-    return h.digest();
-}
-
 MassReport Simulation::mass() const {
     MassReport r;
     const auto& ledger = world_.resource<MassLedger>();
@@ -473,51 +399,6 @@ std::uint64_t Simulation::nonfinite_count() const {
         }
     }
     return n;
-}
-
-std::unique_ptr<Snapshot> Simulation::save() const {
-    auto s = std::make_unique<Snapshot>();
-    s->flakes = world_.resource<FlakePool>();
-    s->clock = world_.resource<SimClock>();
-    s->ledger = world_.resource<MassLedger>();
-    if (const auto* w = world_.try_resource<Wind>()) {
-        s->wind = *w;
-    }
-    if (const auto* f = world_.try_resource<WindField>()) {
-        s->wind_field = *f;
-    }
-    copy_components(world_, s->surfaces);
-    copy_components(world_, s->bodies);
-    copy_components(world_, s->covers);
-    return s;
-}
-
-void Simulation::restore(const Snapshot& s) {
-    require_components(world_, s.surfaces, "surface");
-    require_components(world_, s.bodies, "body");
-    require_components(world_, s.covers, "cover");
-    FlakePool& pool = world_.resource<FlakePool>();
-    pool = s.flakes;
-    pool.free_stack.reserve(pool.capacity()); // keep release() allocation-free
-    world_.resource<SimClock>() = s.clock;
-    world_.resource<MassLedger>() = s.ledger;
-    if (s.wind) {
-        world_.set_resource<Wind>(*s.wind);
-    } else {
-        world_.erase_resource<Wind>();
-    }
-    if (s.wind_field) {
-        if (const auto* f = world_.try_resource<WindField>();
-            f == nullptr || !same_grid(*f, *s.wind_field)) {
-            world_.erase_resource<WindFieldSolver>(); // obstacles are re-marked for its grid
-        }
-        world_.set_resource<WindField>(*s.wind_field);
-    } else {
-        clear_wind_field();
-    }
-    put_components(world_, s.surfaces);
-    put_components(world_, s.bodies);
-    put_components(world_, s.covers);
 }
 
 } // namespace snow

@@ -19,6 +19,7 @@
 #include "systems/snapshot.hpp"
 #include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
+#include "systems/source_versions.hpp"
 #include "systems/spectral_snow.hpp"
 #include "systems/wind.hpp"
 #include "systems/wind_field.hpp"
@@ -112,7 +113,11 @@ class Simulation {
     [[nodiscard]] const Body& body(Entity body) const;
     [[nodiscard]] const Schedule& schedule() const { return schedule_; }
     [[nodiscard]] const SimCounters& counters() const { return world_.resource<SimCounters>(); }
-    /// 64-bit hash of the canonical simulation state (flakes, cells, wind, clock).
+    /// 64-bit hash of all simulation state: clock, settings, ledger, counters,
+    /// flakes, surfaces (snow and pending smoothing), wind, emitters, the
+    /// occlusion camera and map, and every collider. Not the thread count,
+    /// nor render-only settings (fog, spectral snow), nor caches that are
+    /// pure functions of hashed state.
     [[nodiscard]] std::uint64_t state_hash() const;
     [[nodiscard]] MassReport mass() const;
     /// NaN/inf values in flake and wind state (0 for a healthy run).
@@ -121,18 +126,28 @@ class Simulation {
     /// Sets the integrator (the rest of the config is fixed at creation).
     void set_integrator(Integrator i);
 
+    /// Everything a tick changes; restore() onto the same scene continues
+    /// bit for bit as the saved run did (for any thread count).
     [[nodiscard]] std::unique_ptr<Snapshot> save() const;
+    /// Throws SimulationError, changing nothing, for a snapshot of another scene.
     void restore(const Snapshot& s);
 
   private:
     friend struct InternalAccess; // systems/internal_access.hpp: tests of single systems
 
     void build_schedule();
-    void bump_geometry();
+    /// state_hash()'s digest of the sources, recomputed when their versions
+    /// change (so state_hash() must not run on two threads at once).
+    struct SourceDigest {
+        bool valid = false;
+        SourceVersions of;
+        std::uint64_t value = 0;
+    };
 
     World world_;
     Schedule schedule_;
     std::unique_ptr<JobPool> jobs_;
+    mutable SourceDigest source_digest_;
 };
 
 } // namespace snow

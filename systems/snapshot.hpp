@@ -4,10 +4,12 @@
 
 #include "ecs/entity.hpp"
 #include "systems/body.hpp"
-#include "systems/snow_cover.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/mass_ledger.hpp"
+#include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/sim_counters.hpp"
+#include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/wind.hpp"
 #include "systems/wind_field.hpp"
@@ -19,18 +21,22 @@
 namespace snow {
 
 /// Everything a tick can change. Geometry and settings are not included: a
-/// snapshot restores onto the same scene it was taken from.
+/// snapshot restores onto the same scene it was taken from. Caches are not
+/// included either: they rebuild from their sources (source_versions.hpp).
 struct Snapshot {
     FlakePool flakes;
     SimClock clock;
     MassLedger ledger;
-    std::optional<Wind> wind;
+    SimCounters counters;
+    std::optional<Wind> wind;            ///< its walk, gust and settings
     std::optional<WindField> wind_field; ///< the whole field: state and what derives from it
+    std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
+    /// Snow and pending smoothing of every surface, by entity.
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
-    std::vector<std::pair<Entity, Body>> bodies;
-    /// What each cover's base was built from: without it a cover restored to
-    /// a base from before a rebuild would never rebuild again.
+    /// What each cover's base was built from and its drop cells, by entity.
     std::vector<std::pair<Entity, SnowCover>> covers;
+    /// Pose, path progress and carried snow of every body, by entity.
+    std::vector<std::pair<Entity, Body>> bodies;
 };
 
 } // namespace snow

@@ -7,7 +7,8 @@
 // as clumps (mass exact) onto whatever is there now.
 #include "systems/snow_cover.hpp"
 
-#include "systems/occlusion.hpp"
+#include "systems/limits.hpp"
+#include "systems/occlusion_raster.hpp"
 #include "systems/shed.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
@@ -22,8 +23,7 @@ namespace snow {
 
 namespace {
 
-/// Largest base level a cover keeps (as make_surface's limit); higher tops are void.
-constexpr double max_base_level = 1.0e15;
+constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 /// Height (m) above a raised base at which its former snow reappears, so it lands again.
 constexpr float reappear_height = 1.0e-3f;
 
@@ -77,8 +77,8 @@ void target_base(const World& w, const SnowSurface& s, SnowCover& cover,
     out.resize(s.cell_count());
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double level = static_cast<double>(m.top_y[i]) / s.unit_height;
-        out[i] =
-            owned[i] != 0 && std::abs(level) <= max_base_level ? std::llround(level) : void_level;
+        out[i] = owned[i] != 0 && std::abs(level) <= max_surface_level ? std::llround(level)
+                                                                       : void_level;
     }
     cover.column_top = std::move(m.top_y);
 }
@@ -213,19 +213,19 @@ SnowSurface make_cover_surface(const CoverDef& def) {
 }
 
 void cover_system(World& w) {
-    const std::uint64_t version = w.resource<GeometryVersion>().version;
+    const SourceVersions versions = source_versions(w);
     auto& covers = w.pool<SnowCover>();
     std::vector<std::int64_t> target;
     for (std::size_t k = 0; k < covers.size(); ++k) {
         SnowCover& cover = covers.components()[k];
-        if (cover.built_from == version) {
+        if (cover.current(versions)) {
             continue;
         }
         SnowSurface& s = w.get<SnowSurface>(covers.entities()[k]);
         target_base(w, s, cover, target);
-        const bool complete = apply_base(w, s, target);
+        cover.built = apply_base(w, s, target);
+        cover.built_from = versions;
         derive_edges(s, cover);
-        cover.built_from = complete ? version : ~0ull;
     }
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "systems/source_versions.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -25,15 +26,20 @@ struct CoverDef {
     float repose_deg = 40.0f;      ///< snow on steeper total slopes slides down (degrees)
 };
 
-/// Largest cover (cells in all); more is an input error.
-inline constexpr std::uint64_t max_cover_cells = 4096ull * 4096ull;
-
 /// Component beside the SnowSurface of a cover entity: what its base was
 /// built from and the cells at drops, where spill looks.
 struct SnowCover {
     float drop_limit = 0.15f;
-    /// GeometryVersion the base was last built from (~0: never).
-    std::uint64_t built_from = ~0ull;
+    /// False until a rebuild took all of the base to the geometry (and again
+    /// while one could not: the flake pool was full).
+    bool built = false;
+    /// The source versions the base was last built from; only solids and
+    /// surfaces matter (a cover follows the geometry, not the camera).
+    SourceVersions built_from;
+    /// The base follows the current solids and surfaces.
+    [[nodiscard]] bool current(const SourceVersions& now) const {
+        return built && built_from.solids == now.solids && built_from.surfaces == now.surfaces;
+    }
     /// Per cell, the highest geometry of the column (m); -inf where none.
     /// Kept so a void cell's neighbours know how far the ground drops.
     std::vector<float> column_top;

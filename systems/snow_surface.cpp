@@ -13,10 +13,6 @@ namespace snow {
 
 namespace {
 
-/// Largest level magnitude a surface may use: differences and products in
-/// redistribution stay far inside 64/128-bit range.
-constexpr double max_level = 1.0e15;
-
 /// Cells along one side: size / cell rounded, checked against the grid limits.
 std::uint32_t cells_per_side(Invalid& err, const char* field, double size, double cell) {
     const double n = size / cell;
@@ -58,7 +54,7 @@ SnowSurface make_surface(const SurfaceDef& def) {
                              std::abs(static_cast<double>(def.slope_x)) * nx * cell +
                              std::abs(static_cast<double>(def.slope_z)) * nz * cell;
         check::at_most(e, "surface.base_y and slopes (in snow units of this cell size)",
-                       reach / unit_height, max_level);
+                       reach / unit_height, max_surface_level);
     }
     throw_if(e);
 
@@ -90,8 +86,25 @@ SnowSurface make_surface(const SurfaceDef& def) {
         std::min(edge, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
     // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
     const double lap = std::round(def.laplacian_limit * cell * cell / unit_height);
-    s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_level));
+    s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_surface_level));
     return s;
+}
+
+std::array<glm::vec3, 4> surface_base_corners(const SnowSurface& s) {
+    // Plane through the corner cells' centres, extended to the grid's edges.
+    const auto base = [&](std::uint32_t ix, std::uint32_t iz) {
+        return static_cast<double>(s.base_level[s.index(ix, iz)]) * s.unit_height;
+    };
+    const double cell = s.cell;
+    const double h00 = base(0, 0);
+    const double gx = s.nx > 1 ? (base(s.nx - 1, 0) - h00) / ((s.nx - 1) * cell) : 0.0;
+    const double gz = s.nz > 1 ? (base(0, s.nz - 1) - h00) / ((s.nz - 1) * cell) : 0.0;
+    const double x0 = s.x0, z0 = s.z0, x1 = x0 + s.nx * cell, z1 = z0 + s.nz * cell;
+    const auto at = [&](double x, double z) {
+        const double y = h00 + (x - x0 - 0.5 * cell) * gx + (z - z0 - 0.5 * cell) * gz;
+        return glm::vec3{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+    };
+    return {at(x0, z0), at(x1, z0), at(x1, z1), at(x0, z1)};
 }
 
 bool SnowSurface::cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const {

@@ -4,7 +4,11 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "systems/limits.hpp"
 
+#include <glm/vec3.hpp>
+
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -24,13 +28,6 @@ struct SurfaceDef {
     bool spills = true;                 ///< false for the ground: its edges keep their snow
     float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
 };
-
-/// Largest grid a surface may have (cells per side); larger is an input error.
-inline constexpr std::uint32_t max_surface_cells_per_side = 4096;
-
-/// Most settled units Simulation::add_settled_snow lets one cell reach: far
-/// above any real pile, and clear of unsigned wrap-around in later landings.
-inline constexpr std::uint32_t max_cell_units = (1u << 31) - 1;
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
 /// so redistribution works where snow changed, whatever the surface's size.
@@ -170,7 +167,12 @@ struct SurfaceOf {
 struct SnowHolder {};
 
 /// Builds a surface from a definition; throws SimulationError naming the bad
-/// field for invalid values.
+/// field for invalid values. Its grid has at most
+/// max_surface_cells_per_side cells per side (limits.hpp).
 [[nodiscard]] SnowSurface make_surface(const SurfaceDef& def);
+
+/// Corners of a surface's bare top as the plane through its corner cells (what
+/// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1).
+[[nodiscard]] std::array<glm::vec3, 4> surface_base_corners(const SnowSurface& s);
 
 } // namespace snow

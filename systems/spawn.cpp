@@ -43,7 +43,7 @@ Aabb spawn_region(const World& w, const Aabb& bounds) {
     float ground = bounds.max.y;
     bool any = false;
     w.each<SnowSurface, SurfaceOf>([&](Entity, const SnowSurface& s, const SurfaceOf& of) {
-        if (!of.owner.is_null() || s.cell_count() == 0) {
+        if (!of.owner.is_null()) {
             return;
         }
         // The bare top is a plane: its lowest point is at a corner cell.

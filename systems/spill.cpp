@@ -17,8 +17,8 @@ namespace {
 
 /// Sheds the excess of cell (ix, iz) over the edge limit as clumps starting
 /// at `at`; stops, keeping the rest on the edge, when the pool is full.
-void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool,
-          const ClumpStart& at, SimCounters& counters) {
+void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool, const ClumpStart& at,
+          SimCounters& counters) {
     std::uint32_t& cell = s.snow[s.index(ix, iz)];
     const std::uint32_t gone = shed_units(pool, cell - s.edge_limit_units, at);
     cell -= gone;
@@ -81,9 +81,6 @@ void spill_system(World& w) {
     auto& surfaces = w.pool<SnowSurface>();
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         SnowSurface& s = surfaces.components()[i];
-        if (s.nx == 0 || s.nz == 0) {
-            continue;
-        }
         if (s.spills) {
             spill_border(s, pool, k_over_m, counters);
         }

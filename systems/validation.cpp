@@ -2,6 +2,11 @@
 // def-struct habit): the facade and the scene loader both call these.
 #include "systems/validation.hpp"
 
+#include "systems/emitter.hpp"
+#include "systems/fog.hpp"
+#include "systems/limits.hpp"
+#include "systems/sim_config.hpp"
+#include "systems/spectral_snow.hpp"
 #include "systems/units.hpp"
 
 #include <algorithm>
@@ -9,9 +14,6 @@
 namespace snow {
 
 namespace {
-/// Largest body size (m): anything larger is an input error, not a body.
-constexpr double max_body_size = 100.0;
-
 bool power_of_two(std::uint32_t v) {
     return v != 0 && (v & (v - 1)) == 0;
 }
@@ -20,7 +22,7 @@ bool power_of_two(std::uint32_t v) {
 Invalid validate(const SimConfig& c) {
     Invalid e;
     check::positive(e, "simulation.dt", c.dt);
-    check::at_most(e, "simulation.dt", c.dt, 1.0);
+    check::at_most(e, "simulation.dt", c.dt, max_dt);
     check::finite3(e, "simulation.gravity", c.gravity);
     check::finite3(e, "simulation.bounds.min", c.bounds.min);
     check::finite3(e, "simulation.bounds.max", c.bounds.max);
@@ -33,15 +35,16 @@ Invalid validate(const SimConfig& c) {
     if (c.max_flakes == 0) {
         check::fail(e, "simulation.max_flakes", ">= 1", 0);
     }
-    check::at_most(e, "simulation.max_flakes", c.max_flakes, 16u << 20);
+    check::at_most(e, "simulation.max_flakes", c.max_flakes, max_flakes);
     if (c.threads == 0) {
         check::fail(e, "simulation.threads", ">= 1", 0);
     }
-    check::at_most(e, "simulation.threads", c.threads, 256);
+    check::at_most(e, "simulation.threads", c.threads, max_threads);
     if (c.smoothing_iterations == 0) {
         check::fail(e, "simulation.smoothing_iterations", ">= 1", 0);
     }
-    check::at_most(e, "simulation.smoothing_iterations", c.smoothing_iterations, 4096);
+    check::at_most(e, "simulation.smoothing_iterations", c.smoothing_iterations,
+                   max_smoothing_iterations);
     if (integrator_name(c.integrator) == "unknown") {
         check::fail(e, "simulation.integrator", "one of " + integrator_choices(),
                     static_cast<double>(c.integrator));
@@ -52,7 +55,7 @@ Invalid validate(const SimConfig& c) {
 Invalid validate(const Emitter& m) {
     Invalid e;
     check::non_negative(e, "emitter.rate", m.rate);
-    check::at_most(e, "emitter.rate", m.rate, 1.0e8);
+    check::at_most(e, "emitter.rate", m.rate, max_emitter_rate);
     const double min_g = unit_kg * 1000.0;
     const double max_g = min_g * max_flake_units;
     check::positive(e, "emitter.mass_min_g", m.mass_min_g);
@@ -64,11 +67,11 @@ Invalid validate(const Emitter& m) {
     check::ordered(e, "emitter.mass_min_g", m.mass_min_g, "emitter.mass_max_g", m.mass_max_g);
     check::positive(e, "emitter.size_min", m.size_min);
     check::positive(e, "emitter.size_max", m.size_max);
-    check::at_most(e, "emitter.size_max", m.size_max, 1.0);
+    check::at_most(e, "emitter.size_max", m.size_max, max_flake_size);
     check::ordered(e, "emitter.size_min", m.size_min, "emitter.size_max", m.size_max);
     check::positive(e, "emitter.fall_speed_min", m.fall_speed_min);
     check::positive(e, "emitter.fall_speed_max", m.fall_speed_max);
-    check::at_most(e, "emitter.fall_speed_max", m.fall_speed_max, 1000.0);
+    check::at_most(e, "emitter.fall_speed_max", m.fall_speed_max, max_fall_speed);
     check::ordered(e, "emitter.fall_speed_min", m.fall_speed_min, "emitter.fall_speed_max",
                    m.fall_speed_max);
     return e;
@@ -109,7 +112,8 @@ Invalid validate(const Wind& w) {
     check::positive(e, "wind.gust_duration", w.gust_duration);
     check::non_negative(e, "wind.gust_left", w.gust_left);
     for (const float c : {w.base.x, w.base.y, w.base.z}) {
-        check::at_most(e, "wind.base (each component's magnitude)", std::abs(c), 200.0);
+        check::at_most(e, "wind.base (each component's magnitude)", std::abs(c),
+                       max_wind_base_component);
     }
     return e;
 }
@@ -136,11 +140,18 @@ Invalid validate(const Fog& f) {
 
 Invalid validate(const SpectralSnow& s) {
     Invalid e;
-    if (!power_of_two(s.size_xy) || s.size_xy < 8 || s.size_xy > 512) {
-        check::fail(e, "spectral.size_xy", "a power of two in [8, 512]", s.size_xy);
+    const auto range = [](std::uint32_t lo, std::uint32_t hi) {
+        return "a power of two in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    };
+    if (!power_of_two(s.size_xy) || s.size_xy < min_spectral_size_xy ||
+        s.size_xy > max_spectral_size_xy) {
+        check::fail(e, "spectral.size_xy", range(min_spectral_size_xy, max_spectral_size_xy),
+                    s.size_xy);
     }
-    if (!power_of_two(s.size_t) || s.size_t < 4 || s.size_t > 256) {
-        check::fail(e, "spectral.size_t", "a power of two in [4, 256]", s.size_t);
+    if (!power_of_two(s.size_t) || s.size_t < min_spectral_size_t ||
+        s.size_t > max_spectral_size_t) {
+        check::fail(e, "spectral.size_t", range(min_spectral_size_t, max_spectral_size_t),
+                    s.size_t);
     }
     check::positive(e, "spectral.speed", s.speed);
     check::positive(e, "spectral.band_low", s.band_low);
@@ -162,7 +173,7 @@ Invalid validate(const BodyMotion& m) {
         check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
     }
     check::non_negative(e, "motion.speed", m.speed);
-    check::at_most(e, "motion.speed", m.speed, 1000.0);
+    check::at_most(e, "motion.speed", m.speed, max_body_speed);
     return e;
 }
 

@@ -1,8 +1,8 @@
 // wind_field: steps the declared field every update_every ticks, after the
 // global wind moved (its walk and gusts are the inflow) and before flakes
 // integrate in it. Obstacles are re-marked when the geometry changed.
-#include "systems/occlusion.hpp"
 #include "systems/sim_config.hpp"
+#include "systems/source_versions.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
 #include "systems/wind_field_solver.hpp"
@@ -15,13 +15,12 @@ void wind_field_system(World& w) {
     if (s == nullptr) {
         s = &w.set_resource<WindFieldSolver>();
     }
-    const auto* gv = w.try_resource<GeometryVersion>();
-    const std::uint64_t version = gv != nullptr ? gv->version : 0;
-    if (!s->built || s->geometry_version != version) {
+    const std::uint64_t solids = source_versions(w).solids;
+    if (!s->built || s->built_from_solids != solids) {
         mark_obstacles(w, f, s->solid);
         apply_obstacles(f, *s);
         s->built = true;
-        s->geometry_version = version;
+        s->built_from_solids = solids;
     }
     if (f.wait > 0) {
         --f.wait;

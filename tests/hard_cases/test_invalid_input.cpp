@@ -207,7 +207,7 @@ std::vector<Field> api_fields() {
 struct Observed {
     std::uint64_t hash;
     std::size_t entities;
-    std::uint64_t geometry;
+    SourceVersions sources;
     bool fog, spectral, occlusion;
     friend bool operator==(const Observed&, const Observed&) = default;
 };
@@ -217,7 +217,7 @@ Observed observe(const Simulation& sim) {
     const World& w = sim.world();
     return {sim.state_hash(),
             w.entity_count(),
-            w.resource<GeometryVersion>().version,
+            w.resource<SourceVersions>(),
             w.has_resource<Fog>(),
             w.has_resource<SpectralSnow>(),
             w.has_resource<OcclusionCamera>()};

@@ -114,7 +114,8 @@ TEST(HardCaseThinRoof, NoTunnellingAutomatic) {
 // tick: rebuilding the path's start as p − v_end·dt would put it up to
 // ~0.25 m below the real one for these decelerating flakes, and a flake that
 // began less than that above the roof would cross it unseen (the bug this
-// suite found; collide and deposit now use integrate::path_start).
+// suite found; collide and deposit now read the start integrate recorded,
+// FlakePool::start_x/y/z).
 TEST(HardCaseThinRoof, NoTunnellingExponential) {
     expect_no_tunnelling(Integrator::exponential, 9.81f);
 }

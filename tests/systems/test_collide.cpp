@@ -22,7 +22,8 @@ SimConfig config(std::uint32_t capacity, unsigned threads = 1) {
     return c;
 }
 
-/// Puts a flake straight into the pool (no emitter), counted as spawned; unlike
+/// Puts a flake straight into the pool (no emitter), counted as spawned, as
+/// if it had moved at v this tick (its path started at p − v·dt); unlike
 /// Simulation::place_flake it takes any value (collide must cope with NaN).
 std::uint32_t add_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units = 1) {
     World& w = InternalAccess::world(sim);
@@ -30,6 +31,8 @@ std::uint32_t add_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t
     std::uint32_t slot = 0;
     EXPECT_TRUE(f.acquire(slot));
     f.px[slot] = p.x, f.py[slot] = p.y, f.pz[slot] = p.z;
+    f.start_x[slot] = p.x - v.x * dt, f.start_y[slot] = p.y - v.y * dt;
+    f.start_z[slot] = p.z - v.z * dt;
     f.vx[slot] = v.x, f.vy[slot] = v.y, f.vz[slot] = v.z;
     f.mass_units[slot] = units;
     w.resource<MassLedger>().spawned += units;
@@ -241,7 +244,7 @@ TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
     }
 }
 
-TEST(Collide, GridIndexesManyBoxesAndRebuildsOnGeometryVersion) {
+TEST(Collide, GridIndexesManyBoxesAndRebuildsWhenTheSolidsChange) {
     Simulation sim(config(1024));
     // 20 × 20 small bare boxes; one flake falls onto each top.
     for (int i = 0; i < 20; ++i) {
@@ -261,11 +264,11 @@ TEST(Collide, GridIndexesManyBoxesAndRebuildsOnGeometryVersion) {
     }
     EXPECT_LE(most, 4u); // a flake meets a handful of boxes, not 400
 
-    const std::uint64_t built = grid.geometry_version;
+    const std::uint64_t built = grid.solids_version;
     const std::uint32_t s = add_flake(sim, {0.0f, 5.0f, 0.0f}, {}, 1);
-    sim.add_sphere({0.0f, 5.0f, 0.0f}, 0.5f); // bumps GeometryVersion
+    sim.add_sphere({0.0f, 5.0f, 0.0f}, 0.5f); // bumps SourceVersions::solids
     collide_system(InternalAccess::world(sim));
-    EXPECT_NE(sim.world().resource<ColliderGrid>().geometry_version, built);
+    EXPECT_NE(sim.world().resource<ColliderGrid>().solids_version, built);
     EXPECT_FALSE(sim.flakes().is_alive(s));
     EXPECT_EQ(sim.world().resource<MassLedger>().removed_sphere, 1u);
 }

@@ -38,11 +38,27 @@ SurfaceDef flat(float x0, float z0, float size, float cell, float y = 0.0f) {
     return d;
 }
 
-/// Adds an airborne flake (and its mass to the ledger); returns its slot.
+/// Adds an airborne flake (and its mass to the ledger) as if it had moved at
+/// v this tick (its path started at p − v·dt); returns its slot.
 std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units) {
-    const std::optional<std::uint32_t> slot = sim.place_flake({p, v, 9.81f, 0.01f, units});
-    EXPECT_TRUE(slot.has_value()) << "test setup: flake pool full";
-    return slot.value_or(0);
+    FlakePool& f = InternalAccess::world(sim).resource<FlakePool>();
+    std::uint32_t slot = 0;
+    EXPECT_TRUE(f.acquire(slot));
+    f.px[slot] = p.x;
+    f.py[slot] = p.y;
+    f.pz[slot] = p.z;
+    const float dt = sim.config().dt;
+    f.start_x[slot] = p.x - v.x * dt;
+    f.start_y[slot] = p.y - v.y * dt;
+    f.start_z[slot] = p.z - v.z * dt;
+    f.vx[slot] = v.x;
+    f.vy[slot] = v.y;
+    f.vz[slot] = v.z;
+    f.k_over_m[slot] = 9.81f;
+    f.size[slot] = 0.01f;
+    f.mass_units[slot] = units;
+    InternalAccess::world(sim).resource<MassLedger>().spawned += units;
+    return slot;
 }
 
 /// World centre of cell (ix, iz).

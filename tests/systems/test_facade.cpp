@@ -54,11 +54,11 @@ TEST(Facade, ClearFogRemovesItAndSetFogBringsItBack) {
 TEST(Facade, MovedBoxDeflectsFlakesWhereItNowIs) {
     Simulation sim(small_box());
     const Entity box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {-0.5f, 1.0f, 1.0f}});
-    const std::uint64_t geometry = sim.world().resource<GeometryVersion>().version;
+    const std::uint64_t solids = sim.world().resource<SourceVersions>().solids;
     const Aabb moved{{0.5f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}};
     sim.move_box(box, moved);
     EXPECT_EQ(sim.world().get<BoxCollider>(box).box.min, moved.min);
-    EXPECT_GT(sim.world().resource<GeometryVersion>().version, geometry);
+    EXPECT_GT(sim.world().resource<SourceVersions>().solids, solids);
     // A flake moving fast along +x enters the box's new place this tick: it
     // ends on the face it came through.
     const auto slot = sim.place_flake({{0.45f, 0.5f, 0.0f}, {30.0f, 0.0f, 0.0f}});
