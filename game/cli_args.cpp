@@ -78,6 +78,8 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
                              integrator_choices() + ")"};
         }
         o.integrator = *i;
+    } else if (f == "--auto-snow") {
+        o.auto_snow = true;
     } else {
         return false;
     }

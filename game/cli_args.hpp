@@ -40,14 +40,17 @@ class ArgReader {
     std::string_view flag_;
 };
 
-/// The simulation flags both apps take (--seed, --threads, --dt, --integrator,
-/// --max-flakes), as their usage lines.
+/// The scene flags both apps take (--seed, --threads, --dt, --integrator,
+/// --max-flakes, --auto-snow), as their usage lines.
 inline constexpr const char* override_usage =
     R"(  --seed S            random seed (default: the scene's)
   --threads T         worker threads, >= 1 (default: the scene's, usually 1)
   --dt SECONDS        fixed tick length, 0 < dt <= 1 (default: the scene's)
   --integrator NAME   euler | semi_implicit | exponential | rk4 | auto
   --max-flakes N      flake pool size, 1 to 16777216 (default: the scene's)
+  --auto-snow         snow on a plain scene: its meshes become colliders under a
+                      snow cover, with an emitter, occlusion camera and camera
+                      where the scene declares none (docs/scenes.md)
 )";
 
 /// If the current flag is one of override_usage's, reads its value into `o`

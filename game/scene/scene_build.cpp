@@ -3,6 +3,8 @@
 // only the renderer reads (meshes, lights, camera, environment) goes to SceneVisuals.
 #include "game/scene/scene_build.hpp"
 
+#include "game/scene/scene_auto_snow.hpp"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -52,20 +54,12 @@ void check_surface_cells(const SurfaceDef& d, const std::string& path, float sca
 }
 
 Aabb default_bounds(const SceneGeometry& g, const Aabb& fallback) {
-    bool any = false;
-    Aabb b;
-    for (const WorldNode& n : g.nodes) {
-        if (n.primitives.empty()) {
-            continue;
-        }
-        b = any ? Aabb{glm::min(b.min, n.bounds.min), glm::max(b.max, n.bounds.max)} : n.bounds;
-        any = true;
-    }
-    if (!any) {
+    const std::optional<Aabb> b = mesh_bounds(g);
+    if (!b) {
         return fallback;
     }
     const float m = default_bounds_margin;
-    return {b.min - glm::vec3(m), b.max + glm::vec3(m, default_bounds_headroom, m)};
+    return {b->min - glm::vec3(m), b->max + glm::vec3(m, default_bounds_headroom, m)};
 }
 
 SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
@@ -110,11 +104,6 @@ Entity add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
         break; // always a body: add_body
     }
     return null_entity;
-}
-
-/// A node whose collider moves (a path, a snowball, or a capsule) is a body.
-bool is_body(const NodeSnow& role) {
-    return role.motion || role.snowball || role.collider == ColliderKind::capsule;
 }
 
 /// The moving body a node declares, shaped by its bounds.
@@ -178,12 +167,22 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         scene_fail("cell_scale (command-line override)",
                    "must be finite and > 0 (got " + number_text(*o.cell_scale) + ")");
     }
+    const SimConfig config = config_for(d, o);
+    // Auto snow fills in what the file leaves undeclared; the rest of the
+    // build treats its roles and effects exactly like declared ones.
+    std::vector<NodeSnow> roles = d.roles;
+    SceneSnow s = d.settings;
+    const std::string auto_field =
+        o.auto_snow ? "auto_snow (command-line override)" : d.auto_snow_path;
+    if (o.auto_snow.value_or(!d.auto_snow_path.empty())) {
+        add_auto_snow(d.geometry, config, auto_field, roles, s);
+    }
     // Check every surface before anything is allocated.
     std::vector<std::optional<SurfaceDef>> surfaces(d.geometry.nodes.size());
     std::uint64_t total_cells = 0;
     for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
         const WorldNode& node = d.geometry.nodes[i];
-        const NodeSnow& role = d.roles[i];
+        const NodeSnow& role = roles[i];
         const std::string path = "nodes[" + std::to_string(node.index) + "].extras.snow";
         if ((role.surface || role.collider || is_body(role)) && node.primitives.empty()) {
             scene_fail(path,
@@ -200,10 +199,10 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     }
 
     auto sim = through_facade("simulation settings (after command-line overrides): ",
-                              [&] { return std::make_unique<Simulation>(config_for(d, o)); });
+                              [&] { return std::make_unique<Simulation>(config); });
     for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
         const WorldNode& node = d.geometry.nodes[i];
-        const NodeSnow& role = d.roles[i];
+        const NodeSnow& role = roles[i];
         const std::string prefix = "nodes[" + std::to_string(node.index) + "].extras.snow.";
         Entity owner = null_entity;
         if (is_body(role)) {
@@ -221,27 +220,31 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         }
     }
 
-    const SceneSnow& s = d.settings;
-    const std::string prefix = d.settings_path + ".";
+    // Facade errors name the declaration, or auto snow for what it made.
+    const std::string declared = d.settings_path + ".";
+    const std::string made = auto_field + ": ";
+    const auto prefix = [&](bool was_declared) { return was_declared ? declared : made; };
     if (s.emitter) {
-        through_facade(prefix, [&] { return sim->add_emitter(*s.emitter); });
+        through_facade(prefix(d.settings.emitter.has_value()),
+                       [&] { return sim->add_emitter(*s.emitter); });
     }
     if (s.wind) {
-        through_facade(prefix, [&] { sim->set_wind(*s.wind); });
+        through_facade(declared, [&] { sim->set_wind(*s.wind); });
     }
     if (s.fog) {
-        through_facade(prefix, [&] { sim->set_fog(*s.fog); });
+        through_facade(declared, [&] { sim->set_fog(*s.fog); });
     }
     if (s.occlusion) {
-        through_facade(prefix, [&] { sim->set_occlusion(*s.occlusion); });
+        through_facade(prefix(d.settings.occlusion.has_value()),
+                       [&] { sim->set_occlusion(*s.occlusion); });
     }
     if (s.spectral) {
-        through_facade(prefix, [&] { sim->set_spectral(*s.spectral); });
+        through_facade(declared, [&] { sim->set_spectral(*s.spectral); });
     }
     if (s.cover) {
         CoverDef cover = *s.cover;
         cover.cell *= o.cell_scale.value_or(1.0f); // quality presets scale every grid
-        through_facade(prefix, [&] { return sim->add_cover(cover); });
+        through_facade(prefix(d.settings.cover.has_value()), [&] { return sim->add_cover(cover); });
     }
     // After the scene's own camera and the default one mesh colliders bring.
     if (const auto* cam = sim->world().try_resource<OcclusionCamera>();
@@ -250,7 +253,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         c.resolution = *o.occlusion_resolution;
         through_facade("occlusion (command-line override): ", [&] { sim->set_occlusion(c); });
     }
-    visuals.camera = s.camera;
+    visuals.camera = s.camera.value_or(CameraDef{});
     visuals.environment = s.environment;
     return sim;
 }

@@ -28,6 +28,8 @@ struct SceneDescription {
     std::vector<std::optional<LightSpec>> lights; ///< per geometry node
     SceneSnow settings;
     std::string settings_path; ///< "scenes[i].extras.snow", prefixes facade errors
+    /// The `auto` field that asks for auto snow (scene or asset level); empty: none.
+    std::string auto_snow_path;
 };
 
 /// The rectangle and base plane of a node's surface: the top of `bounds`; a

@@ -77,6 +77,11 @@ SceneDescription describe(SceneGeometry geometry, const SceneSchema& schema) {
     } else {
         d.settings_path = "default scene settings (the file has no scenes)";
     }
+    if (schema.asset_auto_snow) {
+        d.auto_snow_path = std::string(asset_snow_path) + ".auto";
+    } else if (d.settings.auto_snow) {
+        d.auto_snow_path = d.settings_path + ".auto";
+    }
     d.geometry = std::move(geometry);
     return d;
 }

@@ -30,6 +30,10 @@ struct SceneOverrides {
     std::optional<std::uint32_t> occlusion_resolution;
     /// Replaces SimConfig::smoothing_iterations.
     std::optional<std::uint32_t> smoothing_iterations;
+    /// Replaces the file's `extras.snow.auto`: true fills in mesh colliders, an
+    /// occlusion camera, a cover, an emitter and a camera where the scene
+    /// declares none (docs/scenes.md#snow-on-a-plain-scene).
+    std::optional<bool> auto_snow;
 };
 
 /// Either a ready simulation and its visuals (sim set, error empty) or one

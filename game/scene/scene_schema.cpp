@@ -203,16 +203,26 @@ constexpr Field<SceneSnow> scene_snow_fields[] = {
     {"cover", &read_nested<&SceneSnow::cover, cover_fields, reject>},
     {"camera",
      +[](const Json& j, const std::string& field, SceneSnow& s) {
-         s.camera = read_struct(j, field, camera_fields, reject);
-         if (!(s.camera.far_plane > s.camera.near_plane)) {
+         const CameraDef& c = s.camera.emplace(read_struct(j, field, camera_fields, reject));
+         if (!(c.far_plane > c.near_plane)) {
              scene_fail(field + ".far_plane",
-                        "must be > near_plane (got " + number_text(s.camera.far_plane) + ")");
+                        "must be > near_plane (got " + number_text(c.far_plane) + ")");
          }
-         if (s.camera.position == s.camera.target) {
+         if (c.position == c.target) {
              scene_fail(field + ".target", "must differ from position");
          }
      }},
     {"environment", &read_nested<&SceneSnow::environment, environment_fields, reject>},
+    {"auto", &SceneSnow::auto_snow},
+};
+
+/// `asset.extras.snow`: the file asks for auto snow whichever scene is used.
+struct AssetSnow {
+    bool auto_snow = false;
+};
+
+constexpr Field<AssetSnow> asset_snow_fields[] = {
+    {"auto", &AssetSnow::auto_snow},
 };
 
 /// Reads one scene's `extras.snow` and checks its effects with the
@@ -332,6 +342,10 @@ SceneSchema read_schema(const Json& doc) {
             snow ? read_struct(*snow, path + ".extras.snow", node_snow_fields, reject)
                  : NodeSnow{});
         schema.node_lights.push_back(node_light(nodes[i], path, lights));
+    }
+    if (const Json* snow = snow_extras(doc.at("asset"))) {
+        schema.asset_auto_snow =
+            read_struct(*snow, asset_snow_path, asset_snow_fields, reject).auto_snow;
     }
     const Json& scenes = top_list(doc, "scenes");
     for (std::size_t s = 0; s < scenes.size(); ++s) {

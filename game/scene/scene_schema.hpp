@@ -28,6 +28,11 @@ struct NodeSnow {
     bool on_ground = false; ///< the body stands on the bare ground under it
 };
 
+/// A node whose collider moves (a path, a snowball, or a capsule) is a body.
+[[nodiscard]] inline bool is_body(const NodeSnow& role) {
+    return role.motion || role.snowball || role.collider == ColliderKind::capsule;
+}
+
 /// The scene's `extras.snow`: settings and the effects it declares. An absent
 /// effect stays nullopt and is never created ("simulate only what a scene calls for").
 struct SceneSnow {
@@ -39,8 +44,10 @@ struct SceneSnow {
     std::optional<OcclusionCamera> occlusion;
     std::optional<SpectralSnow> spectral;
     std::optional<CoverDef> cover;
-    CameraDef camera;
+    std::optional<CameraDef> camera; ///< absent: the default view, or one framing auto snow
     Environment environment;
+    /// `auto`: snow on the plain scene (scene_auto_snow.hpp) for what it leaves undeclared.
+    bool auto_snow = false;
 };
 
 /// One KHR_lights_punctual light (only "point" lights are supported).
@@ -54,10 +61,14 @@ struct SceneSchema {
     std::vector<NodeSnow> nodes;                       ///< per `nodes[i]`
     std::vector<std::optional<LightSpec>> node_lights; ///< per `nodes[i]`: the light it carries
     std::vector<SceneSnow> scenes;                     ///< per `scenes[s]`
+    bool asset_auto_snow = false; ///< `asset.extras.snow.auto`: auto snow whichever scene is used
 };
 
 /// The JSON path of `scenes[s].extras.snow`, which prefixes its errors.
 [[nodiscard]] std::string scene_snow_path(std::size_t scene);
+
+/// The JSON path of `asset.extras.snow`, which holds only `auto`.
+inline constexpr const char* asset_snow_path = "asset.extras.snow";
 
 /// Reads every node's and scene's `extras.snow` and the lights of a parsed
 /// glTF file (whose structure read_document() has checked). Types, ranges and
