@@ -5,7 +5,6 @@
 #include "bench_scene.hpp"
 
 #include "systems/systems.hpp"
-#include <cstdlib>
 
 namespace snow::bench {
 namespace {
@@ -29,15 +28,15 @@ void field_step(benchmark::State& state) {
     }
     const auto cells = static_cast<double>(state.range(0) * state.range(0) * (state.range(0) / 4));
     state.counters["cells"] = cells;
-    state.counters["ns_per_cell"] = benchmark::Counter(
-        cells * static_cast<double>(state.iterations()),
-        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_cell"] =
+        benchmark::Counter(cells * static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void integrate_in_field(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
                   static_cast<unsigned>(state.range(1)));
-    bw.sim->set_wind_field(field_of_side(static_cast<std::uint32_t>(std::getenv("SIDE") ? std::atoi(std::getenv("SIDE")) : 64)));
+    bw.sim->set_wind_field(field_of_side(64));
     wind_field_system(bw.sim->world()); // the first step fills the field
     bw.start = bw.sim->save();
     std::uint64_t i = 0;

@@ -188,6 +188,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     if (s.wind) {
         through_facade(prefix, [&] { sim->set_wind(*s.wind); });
     }
+    if (s.wind_field) {
+        through_facade(prefix, [&] { sim->set_wind_field(*s.wind_field); });
+    }
     if (s.fog) {
         through_facade(prefix, [&] { sim->set_fog(*s.fog); });
     }

@@ -85,8 +85,33 @@ Emitter read_emitter(JsonReader r) {
     return e;
 }
 
-Wind read_wind(JsonReader r) {
+/// `wind.field`: the grid is "cells": [x, y, z], each at least 1.
+WindFieldDef read_wind_field(JsonReader r) {
+    WindFieldDef d;
+    if (const Json* cells = r.array("cells")) {
+        const std::string field = r.field("cells");
+        if (cells->size() != 3) {
+            scene_fail(field, "must be an array of 3 cell counts [x, y, z] (got " +
+                                  std::to_string(cells->size()) + " values)");
+        }
+        std::uint32_t* out[3] = {&d.cells_x, &d.cells_y, &d.cells_z};
+        for (std::size_t a = 0; a < 3; ++a) {
+            *out[a] = static_cast<std::uint32_t>(json_to_uint(
+                (*cells)[a], field + "[" + std::to_string(a) + "]", 1, max_wind_field_cells));
+        }
+    }
+    r.read("update_every", d.update_every, 1, 1u << 16);
+    r.read("pressure_iterations", d.pressure_iterations, 1, 4096);
+    r.read("eddy_viscosity", d.eddy_viscosity);
+    r.finish();
+    return d;
+}
+
+Wind read_wind(JsonReader r, std::optional<WindFieldDef>& field) {
     Wind w;
+    if (auto f = r.object("field")) {
+        field = read_wind_field(*f);
+    }
     r.read("base", w.base);
     w.current = w.base;
     r.read("walk", w.walk);
@@ -235,8 +260,11 @@ SceneSnow parse_scene_snow(const Json* snow, const std::string& path) {
         check_valid(validate(*s.emitter), path);
     }
     if (auto w = r.object("wind")) {
-        s.wind = read_wind(*w);
+        s.wind = read_wind(*w, s.wind_field);
         check_valid(validate(*s.wind), path);
+        if (s.wind_field) {
+            check_valid(validate(*s.wind_field), path);
+        }
     }
     if (auto f = r.object("fog")) {
         s.fog = read_fog(*f);

@@ -313,7 +313,8 @@ void Simulation::restore(const Snapshot& s) {
         world_.erase_resource<Wind>();
     }
     if (s.wind_field) {
-        if (const auto* f = world_.try_resource<WindField>(); f == nullptr || !same_grid(*f, *s.wind_field)) {
+        if (const auto* f = world_.try_resource<WindField>();
+            f == nullptr || !same_grid(*f, *s.wind_field)) {
             world_.erase_resource<WindFieldSolver>(); // obstacles are re-marked for its grid
         }
         world_.set_resource<WindField>(*s.wind_field);

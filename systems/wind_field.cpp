@@ -237,7 +237,8 @@ struct Sweeper {
     /// other colour, so this is the strided red-black update, exactly.
     void plane(std::int32_t k, std::int32_t colour) const {
         const std::int32_t sy = c.stride(1), sz = c.stride(2);
-        const std::int32_t first_cell = c.index(1, 1, 0), last_cell = c.index(c.dim[0] - 2, c.dim[1] - 2, 0);
+        const std::int32_t first_cell = c.index(1, 1, 0),
+                           last_cell = c.index(c.dim[0] - 2, c.dim[1] - 2, 0);
         const std::int32_t base = k * sz;
         const float* omega = omega_planes[(k + colour) & 1].data();
         const float* at = p + base;
@@ -354,14 +355,16 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
     });
     s.diag_sides = sides;
     // ω where (i + j + parity) is odd in the cells of a plane, 0 elsewhere.
-    const std::size_t plane = static_cast<std::size_t>(c.dim[0]) * static_cast<std::size_t>(c.dim[1]);
+    const std::size_t plane =
+        static_cast<std::size_t>(c.dim[0]) * static_cast<std::size_t>(c.dim[1]);
     s.plane.assign(plane, 0.0f);
     for (int parity = 0; parity < 2; ++parity) {
         s.omega_planes[parity].assign(plane, 0.0f);
         for (std::int32_t j = 1; j < end(c, 1); ++j) {
             for (std::int32_t i = 1; i < end(c, 0); ++i) {
                 const bool colour = ((i + j + parity) & 1) != 0;
-                s.omega_planes[parity][static_cast<std::size_t>(c.index(i, j, 0))] = colour ? sor_omega : 0.0f;
+                s.omega_planes[parity][static_cast<std::size_t>(c.index(i, j, 0))] =
+                    colour ? sor_omega : 0.0f;
             }
         }
     }

@@ -22,8 +22,8 @@ namespace snow {
 struct WindFieldDef {
     std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
     std::uint32_t update_every = 4;                         ///< ticks between solver steps
-    std::uint32_t pressure_iterations = 8;  ///< red-black SOR sweeps per step (fixed)
-    float eddy_viscosity = 0.1f;            ///< turbulent mixing (m²/s); 0: none
+    std::uint32_t pressure_iterations = 8; ///< red-black SOR sweeps per step (fixed)
+    float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
 };
 
 /// Largest cells_x·cells_y·cells_z a field may have.
@@ -108,16 +108,17 @@ inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) 
 /// Reads the cell-centre velocities of a field: plain values and pointers,
 /// so a flake loop holding one by value vectorises.
 struct WindSampler {
-    const float* c[3];      ///< cell-centre u, v, w on the centre lattice
+    const float* c[3]; ///< cell-centre u, v, w on the centre lattice
     Lattice centre;
-    glm::vec3 origin;       ///< bounds.min
-    glm::vec3 inv_cell;     ///< 1 / cell edge (1/m)
-    glm::vec3 cells;        ///< cells per axis, as floats
+    glm::vec3 origin;   ///< bounds.min
+    glm::vec3 inv_cell; ///< 1 / cell edge (1/m)
+    glm::vec3 cells;    ///< cells per axis, as floats
 
     /// Wind (m/s) at world point (x, y, z), trilinear between cell centres;
     /// points outside the bounds read the nearest boundary value. Scalars
     /// out and always inlined, so flake loops vectorise.
-    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy, float& wz) const {
+    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy,
+                                   float& wz) const {
         const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
         const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
         const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
@@ -134,10 +135,10 @@ struct WindSampler {
 struct WindField {
     WindFieldDef def;
     std::uint32_t n[3] = {0, 0, 0}; ///< cells per axis
-    glm::vec3 origin{0.0f};          ///< bounds.min
-    glm::vec3 inv_cell{0.0f};        ///< 1 / cell edge per axis (1/m)
-    Lattice face[3];                 ///< lattices of u, v, w
-    Lattice centre;                  ///< lattice of pressure and cell-centre velocity
+    glm::vec3 origin{0.0f};         ///< bounds.min
+    glm::vec3 inv_cell{0.0f};       ///< 1 / cell edge per axis (1/m)
+    Lattice face[3];                ///< lattices of u, v, w
+    Lattice centre;                 ///< lattice of pressure and cell-centre velocity
 
     // -- state --
     std::vector<float> velocity[3]; ///< u, v, w on their faces (m/s)

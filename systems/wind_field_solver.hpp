@@ -29,15 +29,15 @@ enum InflowSide : std::uint8_t {
 struct WindFieldSolver {
     bool built = false;
     std::uint64_t geometry_version = 0;
-    std::vector<std::uint8_t> solid; ///< per cell of the centre lattice (ghosts 0)
+    std::vector<std::uint8_t> solid;     ///< per cell of the centre lattice (ghosts 0)
     std::vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
-    std::vector<float> inv_diag;     ///< per cell: 1 / Σ coefficients of its open neighbours
-    std::uint8_t diag_sides = 0xff;  ///< inflow sides inv_diag was built for
+    std::vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
+    std::uint8_t diag_sides = 0xff;      ///< inflow sides inv_diag was built for
     /// Per cell of one plane, for (plane + colour) even and odd: the SOR
     /// factor where the cell is of the colour being swept, else 0.
     std::vector<float> omega_planes[2];
-    std::vector<float> plane; ///< one plane of new pressure
-    std::vector<float> advected[3];  ///< semi-Lagrangian output, swapped with the velocity
+    std::vector<float> plane;       ///< one plane of new pressure
+    std::vector<float> advected[3]; ///< semi-Lagrangian output, swapped with the velocity
     std::vector<float> divergence;
 };
 
