@@ -21,8 +21,13 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
         ASSERT_TRUE(m.balanced()) << "tick " << sim.tick_count();
         ASSERT_EQ(sim.nonfinite_count(), 0u) << "tick " << sim.tick_count();
     }
+    // Every system ran but the wind field, which the village does not declare.
     for (const SystemStats& s : sim.schedule().stats()) {
-        EXPECT_GT(s.calls, 0u) << s.name << " never ran";
+        if (s.name == "wind_field") {
+            EXPECT_EQ(s.calls, 0u);
+        } else {
+            EXPECT_GT(s.calls, 0u) << s.name << " never ran";
+        }
     }
     // Every surface (ground, both roof sides, porch, garage) holds snow.
     std::size_t surfaces = 0;

@@ -122,7 +122,8 @@ void overload_edges(Simulation& sim) {
     });
 }
 
-/// The yard with everything switched on: emitter, walking and gusting wind,
+/// The yard with everything switched on: emitter, walking and gusting wind
+/// with a wind field,
 /// a mesh roof over the snowman seen through a tilted sky camera, and a
 /// garage roof whose edge is over its limit (so it spills at once).
 std::unique_ptr<Simulation> busy_scene(unsigned threads) {
@@ -139,6 +140,7 @@ std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     wind.gust_strength = 2.0f;
     wind.gust_rate = 0.5f;
     sim->set_wind(wind);
+    sim->set_wind_field(WindFieldDef{});
     const glm::vec3 a{-6.0f, 2.0f, 1.0f}, b{-2.0f, 2.0f, 1.0f}, c{-2.0f, 2.5f, 5.0f},
         d{-6.0f, 2.5f, 5.0f};
     sim->add_mesh_collider({a, b, c, a, c, d});

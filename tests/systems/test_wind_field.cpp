@@ -148,6 +148,17 @@ TEST(WindField, OneAndTwoThreadsAgreeEveryTick) {
     EXPECT_TRUE(one->mass().balanced());
 }
 
+TEST(WindField, PinnedHashHoldsInEveryBuild) {
+    // As Determinism.PinnedHashHoldsInEveryBuild, with the field: scalar
+    // Debug and vectorised Release builds must compute it bit for bit alike.
+    // Re-pin only with a reason in the commit message.
+    constexpr std::uint64_t pinned = 0xcd688131e0c5adbaull;
+    auto sim = make_yard();
+    sim->set_wind_field(WindFieldDef{});
+    sim->run(200);
+    EXPECT_EQ(sim->state_hash(), pinned) << "got 0x" << std::hex << sim->state_hash();
+}
+
 TEST(WindField, SaveRestoreReplaysExactly) {
     auto sim = yard_in_field(1);
     sim->run(101); // mid-way between two field steps
