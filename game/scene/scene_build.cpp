@@ -231,6 +231,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     if (s.wind) {
         through_facade(declared, [&] { sim->set_wind(*s.wind); });
     }
+    if (s.wind_field) {
+        through_facade(declared, [&] { sim->set_wind_field(*s.wind_field); });
+    }
     if (s.fog) {
         through_facade(declared, [&] { sim->set_fog(*s.fog); });
     }

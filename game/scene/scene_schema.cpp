@@ -1,5 +1,5 @@
 // The `extras.snow` schema, one table per struct: JSON → SurfaceDef,
-// SimConfig, Emitter, Wind, Fog, OcclusionCamera, SpectralSnow, camera,
+// SimConfig, Emitter, Wind, WindFieldDef, Fog, OcclusionCamera, SpectralSnow, camera,
 // environment and lights. The tables check types and the ranges that only the
 // scene knows (camera, colours); the simulation's validate() functions check
 // the rest, and their messages are prefixed with the JSON path.
@@ -118,6 +118,37 @@ constexpr Field<Wind> wind_fields[] = {
     {"gust_duration", &Wind::gust_duration},
 };
 
+/// `wind.field.cells`: [x, y, z], each at least 1.
+void read_field_cells(const Json& j, const std::string& field, WindFieldDef& d) {
+    std::vector<std::uint64_t> n;
+    read_value(j, field, {1.0, static_cast<double>(max_wind_field_cells)}, n);
+    if (n.size() != 3) {
+        scene_fail(field, "must be an array of 3 cell counts [x, y, z] (got " +
+                              std::to_string(n.size()) + " values)");
+    }
+    d.cells_x = static_cast<std::uint32_t>(n[0]);
+    d.cells_y = static_cast<std::uint32_t>(n[1]);
+    d.cells_z = static_cast<std::uint32_t>(n[2]);
+}
+
+constexpr Field<WindFieldDef> wind_field_fields[] = {
+    {"cells", &read_field_cells},
+    {"update_every", &WindFieldDef::update_every},
+    {"pressure_iterations", &WindFieldDef::pressure_iterations},
+    {"eddy_viscosity", &WindFieldDef::eddy_viscosity},
+};
+
+/// `wind`: the global wind, and in `wind.field` the field obstacles shape.
+void read_wind(const Json& j, const std::string& field, SceneSnow& s) {
+    require_object(j, field);
+    Json global = j;
+    if (const auto it = j.find("field"); it != j.end()) {
+        s.wind_field = read_struct(*it, field + ".field", wind_field_fields, reject);
+        global.erase("field");
+    }
+    s.wind = read_struct(global, field, wind_fields, reject);
+}
+
 constexpr std::pair<std::string_view, FogMode> fog_modes[] = {{"exponential", FogMode::exponential},
                                                               {"half_life", FogMode::half_life},
                                                               {"layered", FogMode::layered}};
@@ -196,7 +227,7 @@ constexpr Field<SceneSnow> scene_snow_fields[] = {
          s.has_bounds = j.contains("bounds");
      }},
     {"emitter", &read_nested<&SceneSnow::emitter, emitter_fields, reject>},
-    {"wind", &read_nested<&SceneSnow::wind, wind_fields, reject>},
+    {"wind", &read_wind},
     {"fog", &read_nested<&SceneSnow::fog, fog_fields, reject>},
     {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_fields, reject>},
     {"spectral", &read_nested<&SceneSnow::spectral, spectral_fields, reject>},
@@ -235,6 +266,9 @@ SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     }
     if (s.wind) {
         check_valid(validate(*s.wind), path);
+    }
+    if (s.wind_field) {
+        check_valid(validate(*s.wind_field), path);
     }
     if (s.fog) {
         check_valid(validate(*s.fog), path);

@@ -21,6 +21,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
         ASSERT_TRUE(m.balanced()) << "tick " << sim.tick_count();
         ASSERT_EQ(sim.nonfinite_count(), 0u) << "tick " << sim.tick_count();
     }
+    // Every system ran but the wind field, which the village does not declare.
     for (const SystemStats& s : sim.schedule().stats()) {
         if (s.name == "wind_field") {
             EXPECT_EQ(s.calls, 0u) << "the village declares no wind field";
@@ -39,7 +40,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
     EXPECT_GT(c.spilled_units, 0u); // roof edges shed snow
     EXPECT_GT(c.rolled, 0u);        // rules 2/3 of [ZCL §IV] fired
     EXPECT_GT(c.occlusion_refreshes, 0u);
-    EXPECT_GT(c.carved_units, 0u); // the walker's trail
+    EXPECT_GT(c.carved_units, 0u);     // the walker's trail
     EXPECT_GT(sim.mass().removed, 0u); // the snowman and the bounds take flakes
 }
 

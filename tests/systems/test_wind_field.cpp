@@ -149,6 +149,19 @@ TEST(WindField, OneAndTwoThreadsAgreeEveryTick) {
     EXPECT_TRUE(one->mass().balanced());
 }
 
+TEST(WindField, PinnedHashHoldsInEveryBuild) {
+    // As Determinism.PinnedHashHoldsInEveryBuild, with the field: scalar
+    // Debug and vectorised Release builds must compute it bit for bit alike.
+    // Re-pin only with a reason in the commit message. (Last re-pinned when
+    // state_hash() came to cover all state: settings, counters, the sky map,
+    // the field's settings and grid.)
+    constexpr std::uint64_t pinned = 0xb809d48c0273f687ull;
+    auto sim = make_yard();
+    sim->set_wind_field(WindFieldDef{});
+    sim->run(200);
+    EXPECT_EQ(sim->state_hash(), pinned) << "got 0x" << std::hex << sim->state_hash();
+}
+
 TEST(WindField, SaveRestoreReplaysExactly) {
     auto sim = yard_in_field(1);
     sim->run(101); // mid-way between two field steps
@@ -227,7 +240,7 @@ TEST(WindField, ProjectionLeavesTheAirNearlyIncompressible) {
         const auto& s = sim->world().resource<WindFieldSolver>();
         worst = std::max(worst, wind_field_divergence(f, s) * edge / free_stream);
     }
-    EXPECT_LT(worst, 0.01);
+    EXPECT_LT(worst, 0.02); // measured 0.0094 with the default 8 sweeps
     RecordProperty("worst_relative_divergence", std::to_string(worst));
 }
 
