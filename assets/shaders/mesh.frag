@@ -1,5 +1,6 @@
 // mesh.frag: lit scene meshes, whitened where snow reaches them [SKY]:
-// incline coefficient dot(N, up) times exposure to the sky from the occlusion map.
+// incline coefficient dot(N, up) times exposure to the sky from the occlusion map
+// (a scene without one has no snow on its meshes).
 in vec3 v_world;
 in vec3 v_normal;
 out vec4 frag_color;
@@ -31,7 +32,8 @@ float sky_exposure(vec3 p, vec3 n) {
     return mix(mix(e00, e10, f.x), mix(e01, e11, f.x), f.y);
 }
 #else
-float sky_exposure(vec3 p, vec3 n) { return 1.0; }
+// No sky map: the simulation tracks no snow on the meshes, so none is drawn.
+float sky_exposure(vec3 p, vec3 n) { return 0.0; }
 #endif
 
 void main() {

@@ -33,12 +33,13 @@ TEST(RenderSnowCover, RoofIsWhiteWhileTheMeshUnderItStaysDark) {
     EXPECT_LT(brightness(crate), 0.6f * brightness(roof));
     EXPECT_GT(crate.x, crate.z + 15.0f) << "the crate keeps its own (brown) colour";
 
-    // Without the sky camera nothing is occluded: the same crate top turns white.
+    // Without a sky map the simulation tracks no snow on the meshes, so none
+    // is drawn on them: the crate top stays as dark as under the roof (it
+    // does not turn white as if the sky saw it).
     scene.world.erase_resource<OcclusionMap>();
-    const Image exposed = render_image(scene.world, scene.visuals, scene.camera);
-    const glm::vec3 crate_exposed =
-        mean_color(exposed, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
-    EXPECT_GT(brightness(crate_exposed), brightness(crate) + 40.0f);
+    const Image bare = render_image(scene.world, scene.visuals, scene.camera);
+    const glm::vec3 crate_bare = mean_color(bare, to_pixel(scene.camera, {2.0f, 0.7f, 0.3f}), 2);
+    EXPECT_NEAR(brightness(crate_bare), brightness(crate), 10.0f);
 }
 
 TEST(RenderSnowCover, InclineCoefficientLeavesWallsUncovered) {
