@@ -19,7 +19,8 @@ constexpr const char* smoke_filter = "--benchmark_filter="
                                      "|/cells:32(/|$)"
                                      "|/resolution:256(/|$)"
                                      "|/mib:64/.*threads:1$"
-                                     "|/cells:256/view:0/changed:0(/|$)";
+                                     "|/cells:256/view:0/changed:0(/|$)"
+                                     "|/bodies:1$";
 
 } // namespace
 
