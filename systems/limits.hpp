@@ -38,6 +38,10 @@ inline constexpr std::uint64_t max_cover_cells = 4096ull * 4096ull;
 inline constexpr double max_body_size = 100.0;   ///< radius, half extent or half height (m)
 inline constexpr double max_body_speed = 1000.0; ///< m/s along a scripted path
 
+// -- wind transport --
+inline constexpr double max_transport_rate = 100.0;   ///< fraction per second per m/s
+inline constexpr double max_transport_height = 100.0; ///< m above the snow
+
 // -- the occlusion camera --
 inline constexpr std::uint32_t max_occlusion_resolution = 4096; ///< texels per side
 inline constexpr double max_occlusion_tilt = 1.2;               ///< |tilt| (radians)

@@ -125,6 +125,9 @@ std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
     field.cells_y = 8;
     field.update_every = 2;
     sim->set_wind_field(field);
+    WindTransportDef drift; // gusts lift the snow off the windward ends
+    drift.threshold = 3.0f;
+    sim->set_wind_transport(drift);
     return sim;
 }
 

@@ -33,7 +33,7 @@ struct YardOptions {
 /// a mesh shelter whose snow-holding roof spills almost at once and a bare
 /// mesh tent, both seen through a tilted sky camera whose lean follows the
 /// wind; a snow cover over a boulder; a snowball and a capsule walker doing
-/// laps through the ground's snow; a coarse wind field.
+/// laps through the ground's snow; a coarse wind field that moves snow.
 [[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads);
 
 /// Flake number `n` of prefill_flakes: uniform in the upper half of the

@@ -16,6 +16,14 @@ constexpr float clump_size = 0.01f;
 
 } // namespace
 
+ClumpStart clump_beyond(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, double ox,
+                        double oz, float k_over_m) {
+    const double cell = s.cell;
+    return {{static_cast<float>(s.x0 + (ix + 0.5 + ox) * cell), s.top_y(s.index(ix, iz)),
+             static_cast<float>(s.z0 + (iz + 0.5 + oz) * cell)},
+            k_over_m};
+}
+
 std::uint32_t shed_units(FlakePool& pool, std::uint32_t units, const ClumpStart& start) {
     std::uint32_t left = units;
     while (left > 0) {

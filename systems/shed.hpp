@@ -5,6 +5,7 @@
 
 #include "ecs/world.hpp"
 #include "systems/flake_pool.hpp"
+#include "systems/snow_surface.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -17,6 +18,12 @@ struct ClumpStart {
     glm::vec3 at{0.0f};
     float k_over_m = 1.0f;
 };
+
+/// Where clumps leaving cell (ix, iz) of `s` across an edge start: the
+/// cell's centre moved one cell by (ox, oz), i.e. half a cell beyond the edge
+/// it crosses, at the cell's snow top.
+[[nodiscard]] ClumpStart clump_beyond(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz,
+                                      double ox, double oz, float k_over_m);
 
 /// Turns up to `units` settled units into resting flakes of at most
 /// max_flake_units each at `start`. Returns the units turned (fewer when the

@@ -61,6 +61,8 @@ void Simulation::build_schedule() {
     schedule_.add("collide", collide_system, {flakes});
     schedule_.add("deposit", deposit_system, {needs<SnowSurface>(), flakes});
     schedule_.add("carve", carve_system, {needs<Body>(), needs<SnowSurface>()});
+    schedule_.add("wind_transport", wind_transport_system,
+                  {wind_transport_declared, needs<SnowSurface>()});
     schedule_.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule_.add("spill", spill_system, {needs<SnowSurface>()});
     schedule_.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
@@ -92,8 +94,27 @@ void Simulation::clear_wind() {
 
 void Simulation::set_wind_field(const WindFieldDef& def) {
     throw_if(validate(def));
-    world_.set_resource<WindField>(make_wind_field(def, config().bounds));
+    WindField f = make_wind_field(def, config().bounds);
+    if (const auto* old = world_.try_resource<WindField>()) {
+        f.transport = old->transport;
+    }
+    world_.set_resource<WindField>(std::move(f));
     world_.erase_resource<WindFieldSolver>(); // obstacles are marked for the new grid
+}
+
+void Simulation::set_wind_transport(const WindTransportDef& def) {
+    throw_if(validate(def));
+    auto* f = world_.try_resource<WindField>();
+    if (f == nullptr) {
+        throw SimulationError("set_wind_transport", "needs a wind field (set_wind_field first)");
+    }
+    f->transport = def;
+}
+
+void Simulation::clear_wind_transport() {
+    if (auto* f = world_.try_resource<WindField>()) {
+        f->transport.reset();
+    }
 }
 
 void Simulation::clear_wind_field() {

@@ -52,6 +52,10 @@ class Simulation {
     /// (if set) blows in on its upwind sides. Replaces any field there was.
     void set_wind_field(const WindFieldDef& def);
     void clear_wind_field();
+    /// Snow the field's wind moves (docs/wind_field.md "Transport"); needs a
+    /// field and stays with it when set_wind_field replaces it.
+    void set_wind_transport(const WindTransportDef& def);
+    void clear_wind_transport();
     /// A snow surface entity; `owner` is the solid it lies on (null for the
     /// ground). Flakes reaching an owner's top are kept only where one of its
     /// surfaces covers that point.

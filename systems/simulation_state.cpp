@@ -180,6 +180,11 @@ void hash_wind_field(StateHasher& h, const WindField* f) {
     hash_vec3(h, f->inflow);
     h.value(f->wait);
     h.value(f->steps);
+    if (const auto& t = f->transport) {
+        for (const float v : {t->threshold, t->rate, t->max_fraction, t->height}) {
+            h.value(v);
+        }
+    }
 }
 
 /// The camera, and the map where it is not a pure function of hashed state:

@@ -28,16 +28,6 @@ void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool, c
     }
 }
 
-/// Centre of cell (ix, iz) moved one cell by (ox, oz): half a cell beyond the
-/// edge it crosses, at the cell's snow top.
-ClumpStart beyond(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, double ox, double oz,
-                  float k_over_m) {
-    const double cell = s.cell;
-    return {{static_cast<float>(s.x0 + (ix + 0.5 + ox) * cell), s.top_y(s.index(ix, iz)),
-             static_cast<float>(s.z0 + (iz + 0.5 + oz) * cell)},
-            k_over_m};
-}
-
 /// Border cells in index order: first row, the two ends of middle rows, last
 /// row; each sheds outward across every border it touches.
 void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& counters) {
@@ -49,7 +39,7 @@ void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& 
             if (s.snow[s.index(ix, iz)] > limit) {
                 const double ox = ix == 0 ? -1.0 : (ix + 1 == s.nx ? 1.0 : 0.0);
                 const double oz = iz == 0 ? -1.0 : (iz + 1 == s.nz ? 1.0 : 0.0);
-                shed(s, ix, iz, pool, beyond(s, ix, iz, ox, oz, k_over_m), counters);
+                shed(s, ix, iz, pool, clump_beyond(s, ix, iz, ox, oz, k_over_m), counters);
             }
         }
     }
@@ -66,7 +56,8 @@ void spill_drops(SnowSurface& s, const SnowCover& cover, FlakePool& pool, float 
             const std::uint8_t side = cover.edge_side[k];
             const auto ix = static_cast<std::uint32_t>(c % s.nx);
             const auto iz = static_cast<std::uint32_t>(c / s.nx);
-            shed(s, ix, iz, pool, beyond(s, ix, iz, off_x[side], off_z[side], k_over_m), counters);
+            shed(s, ix, iz, pool, clump_beyond(s, ix, iz, off_x[side], off_z[side], k_over_m),
+                 counters);
         }
     }
 }

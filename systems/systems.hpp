@@ -17,6 +17,9 @@ void integrate_system(World& w);  ///< integrate.cpp: gravity + drag to wind
 void collide_system(World& w);    ///< collide.cpp: boxes, spheres, meshes, bounds
 void deposit_system(World& w);    ///< deposit.cpp: landing + rolling rules [ZCL §IV]
 void carve_system(World& w);      ///< carve.cpp: bodies push snow to trail rims, snowballs take it
+void wind_transport_system(World& w); ///< wind_transport.cpp: the field's wind moves snow
+/// True when a wind field with transport is declared (wind_transport_system's need).
+[[nodiscard]] bool wind_transport_declared(const World& w);
 void redistribute_system(World& w); ///< redistribute.cpp: Laplacian cap [WF §3]
 void spill_system(World& w);        ///< spill.cpp: edge overflow to lower surfaces
 void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map [SKY]

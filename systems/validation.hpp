@@ -53,6 +53,8 @@ inline void throw_if(const Invalid& v) {
 [[nodiscard]] Invalid validate(const BodyDef& def);
 /// A wind field's grid and solver settings (fields "wind.field.*").
 [[nodiscard]] Invalid validate(const WindFieldDef& d);
+/// Snow transport by the field's wind (fields "wind.field.transport.*").
+[[nodiscard]] Invalid validate(const WindTransportDef& t);
 
 } // namespace snow
 

@@ -11,6 +11,7 @@
 // are open (pressure 0, velocity extrapolated). Faces touching a solid cell
 // hold zero velocity, so air inside and along obstacles is still: the
 // semi-Lagrangian trace reads that stillness into the cells behind them.
+#include "systems/limits.hpp"
 #include "systems/validation.hpp"
 #include "systems/wind_field_solver.hpp"
 
@@ -431,6 +432,19 @@ Invalid validate(const WindFieldDef& d) {
     check::at_most(e, "wind.field.pressure_iterations", d.pressure_iterations, 4096);
     check::non_negative(e, "wind.field.eddy_viscosity", d.eddy_viscosity);
     check::at_most(e, "wind.field.eddy_viscosity", d.eddy_viscosity, 10.0);
+    return e;
+}
+
+Invalid validate(const WindTransportDef& t) {
+    Invalid e;
+    check::positive(e, "wind.field.transport.threshold", t.threshold);
+    check::at_most(e, "wind.field.transport.threshold", t.threshold, max_wind_base_component);
+    check::non_negative(e, "wind.field.transport.rate", t.rate);
+    check::at_most(e, "wind.field.transport.rate", t.rate, max_transport_rate);
+    check::positive(e, "wind.field.transport.max_fraction", t.max_fraction);
+    check::at_most(e, "wind.field.transport.max_fraction", t.max_fraction, 1.0);
+    check::non_negative(e, "wind.field.transport.height", t.height);
+    check::at_most(e, "wind.field.transport.height", t.height, max_transport_height);
     return e;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "systems/geometry.hpp"
+#include "systems/wind_transport.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -13,6 +14,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -139,11 +141,12 @@ struct WindField {
     Lattice centre;                 ///< lattice of pressure and cell-centre velocity
 
     // -- state --
-    std::vector<float> velocity[3]; ///< u, v, w on their faces (m/s)
-    std::vector<float> pressure;    ///< last projection's potential (warm start)
-    glm::vec3 inflow{0.0f};         ///< the global wind of the last step (m/s)
-    std::uint32_t wait = 0;         ///< ticks until the next step
-    std::uint64_t steps = 0;        ///< solver steps taken (0: not yet initialised)
+    std::vector<float> velocity[3];            ///< u, v, w on their faces (m/s)
+    std::vector<float> pressure;               ///< last projection's potential (warm start)
+    glm::vec3 inflow{0.0f};                    ///< the global wind of the last step (m/s)
+    std::uint32_t wait = 0;                    ///< ticks until the next step
+    std::uint64_t steps = 0;                   ///< solver steps taken (0: not yet initialised)
+    std::optional<WindTransportDef> transport; ///< snow the wind moves; absent: none
 
     // -- derived after each step --
     std::vector<float> at_centre[3]; ///< cell-centre velocity, ghosts included

@@ -234,6 +234,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     if (s.wind_field) {
         through_facade(declared, [&] { sim->set_wind_field(*s.wind_field); });
     }
+    if (s.wind_transport) {
+        through_facade(declared, [&] { sim->set_wind_transport(*s.wind_transport); });
+    }
     if (s.fog) {
         through_facade(declared, [&] { sim->set_fog(*s.fog); });
     }

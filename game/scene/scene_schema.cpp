@@ -138,14 +138,35 @@ constexpr Field<WindFieldDef> wind_field_fields[] = {
     {"eddy_viscosity", &WindFieldDef::eddy_viscosity},
 };
 
-/// `wind`: the global wind, and in `wind.field` the field obstacles shape.
-void read_wind(const Json& j, const std::string& field, SceneSnow& s) {
-    require_object(j, field);
-    Json global = j;
-    if (const auto it = j.find("field"); it != j.end()) {
-        s.wind_field = read_struct(*it, field + ".field", wind_field_fields, reject);
-        global.erase("field");
+constexpr Field<WindTransportDef> wind_transport_fields[] = {
+    {"threshold", &WindTransportDef::threshold},
+    {"rate", &WindTransportDef::rate},
+    {"max_fraction", &WindTransportDef::max_fraction},
+    {"height", &WindTransportDef::height},
+};
+
+/// `j` without its member `key`, which `read` takes first when present.
+template <typename Read>
+Json split_member(const Json& j, const std::string& path, const char* key, Read read) {
+    require_object(j, path);
+    Json rest = j;
+    if (const auto it = j.find(key); it != j.end()) {
+        read(*it, path + "." + key);
+        rest.erase(key);
     }
+    return rest;
+}
+
+/// `wind`: the global wind; in `wind.field` the field obstacles shape, and in
+/// `wind.field.transport` the snow its wind moves.
+void read_wind(const Json& j, const std::string& field, SceneSnow& s) {
+    const Json global = split_member(j, field, "field", [&](const Json& f, const std::string& fp) {
+        const Json grid =
+            split_member(f, fp, "transport", [&](const Json& t, const std::string& tp) {
+                s.wind_transport = read_struct(t, tp, wind_transport_fields, reject);
+            });
+        s.wind_field = read_struct(grid, fp, wind_field_fields, reject);
+    });
     s.wind = read_struct(global, field, wind_fields, reject);
 }
 
@@ -269,6 +290,9 @@ SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     }
     if (s.wind_field) {
         check_valid(validate(*s.wind_field), path);
+    }
+    if (s.wind_transport) {
+        check_valid(validate(*s.wind_transport), path);
     }
     if (s.fog) {
         check_valid(validate(*s.fog), path);

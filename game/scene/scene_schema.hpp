@@ -40,7 +40,8 @@ struct SceneSnow {
     bool has_bounds = false; ///< false: bounds come from the geometry
     std::optional<Emitter> emitter;
     std::optional<Wind> wind;
-    std::optional<WindFieldDef> wind_field; ///< `wind.field`: the field obstacles shape
+    std::optional<WindFieldDef> wind_field;         ///< `wind.field`: the field obstacles shape
+    std::optional<WindTransportDef> wind_transport; ///< `wind.field.transport`
     std::optional<Fog> fog;
     std::optional<OcclusionCamera> occlusion;
     std::optional<SpectralSnow> spectral;
