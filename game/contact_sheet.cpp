@@ -8,45 +8,49 @@ namespace snow {
 
 namespace {
 
-/// A 3×5 glyph: one row per entry, bit 2 the left column.
+/// A glyph 5 rows high and `width` (3 or 5) pixels wide: one row per entry,
+/// bit width−1 the left column.
 struct Glyph {
     char c;
+    int width;
     std::array<std::uint8_t, 5> rows;
 };
 
 constexpr std::array<Glyph, 20> glyphs{{
-    {'0', {7, 5, 5, 5, 7}}, {'1', {2, 6, 2, 2, 7}}, {'2', {7, 1, 7, 4, 7}}, {'3', {7, 1, 7, 1, 7}},
-    {'4', {5, 5, 7, 1, 1}}, {'5', {7, 4, 7, 1, 7}}, {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 1, 2, 2}},
-    {'8', {7, 5, 7, 5, 7}}, {'9', {7, 5, 7, 1, 7}}, {':', {0, 2, 0, 2, 0}}, {'.', {0, 0, 0, 0, 2}},
-    {'-', {0, 0, 7, 0, 0}}, {' ', {0, 0, 0, 0, 0}}, {'c', {0, 7, 4, 4, 7}}, {'m', {0, 6, 7, 5, 5}},
-    {'s', {0, 3, 6, 1, 6}}, {'t', {2, 7, 2, 2, 3}}, {'x', {0, 5, 2, 5, 0}}, {'%', {5, 1, 2, 4, 5}},
+    {'0', 3, {7, 5, 5, 5, 7}},     {'1', 3, {2, 6, 2, 2, 7}}, {'2', 3, {7, 1, 7, 4, 7}},
+    {'3', 3, {7, 1, 3, 1, 7}},     {'4', 3, {5, 5, 7, 1, 1}}, {'5', 3, {7, 4, 7, 1, 7}},
+    {'6', 3, {7, 4, 7, 5, 7}},     {'7', 3, {7, 1, 1, 2, 2}}, {'8', 3, {7, 5, 7, 5, 7}},
+    {'9', 3, {7, 5, 7, 1, 7}},     {':', 3, {0, 2, 0, 2, 0}}, {'.', 3, {0, 0, 0, 0, 2}},
+    {'-', 3, {0, 0, 7, 0, 0}},     {' ', 3, {0, 0, 0, 0, 0}}, {'c', 3, {0, 7, 4, 4, 7}},
+    {'m', 5, {0, 30, 21, 21, 21}}, {'s', 3, {0, 3, 6, 1, 6}}, {'t', 3, {2, 7, 2, 2, 3}},
+    {'x', 3, {0, 5, 2, 5, 0}},     {'%', 3, {5, 1, 2, 4, 5}},
 }};
 
-void fill(Image& image, int x0, int y0, int w, int h, std::uint8_t value) {
+/// Calls fn(pixel) for the pixels of a rectangle that lie inside the image.
+template <typename Fn>
+void for_rect(Image& image, int x0, int y0, int w, int h, Fn&& fn) {
     for (int y = std::max(0, y0); y < std::min(image.height, y0 + h); ++y) {
         for (int x = std::max(0, x0); x < std::min(image.width, x0 + w); ++x) {
-            std::uint8_t* p =
-                image.rgba.data() + (static_cast<std::size_t>(y) * image.width + x) * 4;
-            p[0] = p[1] = p[2] = value;
-            p[3] = 255;
+            fn(image.rgba.data() + (static_cast<std::size_t>(y) * image.width + x) * 4);
         }
     }
 }
 
-void draw_glyph_pass(Image& image, int x, int y, std::string_view text, int scale,
-                     std::uint8_t value) {
-    for (const char c : text) {
-        const auto g = std::find_if(glyphs.begin(), glyphs.end(),
-                                    [c](const Glyph& glyph) { return glyph.c == c; });
-        for (int row = 0; g != glyphs.end() && row < 5; ++row) {
-            for (int col = 0; col < 3; ++col) {
-                if ((g->rows[row] >> (2 - col)) & 1u) {
-                    fill(image, x + col * scale, y + row * scale, scale, scale, value);
-                }
-            }
-        }
-        x += 4 * scale;
-    }
+void fill(Image& image, int x0, int y0, int w, int h, std::uint8_t value) {
+    for_rect(image, x0, y0, w, h, [value](std::uint8_t* p) {
+        p[0] = p[1] = p[2] = value;
+        p[3] = 255;
+    });
+}
+
+const Glyph* glyph(char c) {
+    const auto g =
+        std::find_if(glyphs.begin(), glyphs.end(), [c](const Glyph& g) { return g.c == c; });
+    return g != glyphs.end() ? &*g : nullptr;
+}
+
+int advance(const Glyph* g, int scale) {
+    return ((g != nullptr ? g->width : 3) + 1) * scale;
 }
 
 } // namespace
@@ -77,8 +81,27 @@ Image shrink_image(const Image& image, int factor) {
 }
 
 void draw_label(Image& image, int x, int y, std::string_view text, int scale) {
-    draw_glyph_pass(image, x + scale / 2 + 1, y + scale / 2 + 1, text, scale, 20); // shadow
-    draw_glyph_pass(image, x, y, text, scale, 250);
+    int width = 0;
+    for (const char c : text) {
+        width += advance(glyph(c), scale);
+    }
+    // A darkened band behind the text keeps it readable on snow and sky alike.
+    for_rect(image, x - scale, y - scale, width + scale, 7 * scale, [](std::uint8_t* p) {
+        for (int k = 0; k < 3; ++k) {
+            p[k] = static_cast<std::uint8_t>(p[k] * 2 / 5);
+        }
+    });
+    for (const char c : text) {
+        const Glyph* g = glyph(c);
+        for (int row = 0; g != nullptr && row < 5; ++row) {
+            for (int col = 0; col < g->width; ++col) {
+                if ((g->rows[row] >> (g->width - 1 - col)) & 1u) {
+                    fill(image, x + col * scale, y + row * scale, scale, scale, 250);
+                }
+            }
+        }
+        x += advance(g, scale);
+    }
 }
 
 ContactSheet::ContactSheet(std::uint64_t frames, std::uint32_t moments, std::uint32_t columns,

@@ -58,10 +58,12 @@ class Game {
     void next_camera();
     /// The walk camera's player, made where the scene camera stands if there is none.
     void ensure_walker();
+    /// walk_once_at: the player replaces the scene's first path body, standing
+    /// at its path's start until that frame, then walking the path once.
+    void take_over_walker();
     [[nodiscard]] glm::vec3 move_input() const;
     void read_input(float seconds);
     void advance(double seconds);
-    void start_paths();
     void frame_output();
     void report();
     void say(const std::string& message);
@@ -82,8 +84,8 @@ class Game {
     std::unique_ptr<CameraController> camera_;
     CameraMode mode_ = CameraMode::fly;
     std::optional<Walker> walker_;
-    /// walk_once_at: the path bodies waiting, with the path each follows then.
-    std::vector<std::pair<Entity, BodyMotion>> waiting_paths_;
+    /// walk_once_at: the scene walker's path, which the player walks once.
+    std::optional<WalkRoute> route_;
     TimeScale time_scale_;
     std::uint64_t ticks_last_frame_ = 0;
     bool ticks_capped_ = false;
@@ -138,18 +140,9 @@ bool Game::load() {
             sim_->set_emitter_rate(e, *opt_.snowfall);
         }
     }
-    waiting_paths_.clear();
+    route_.reset();
     if (opt_.walk_once_at) {
-        w.each<Body>([&](Entity e, const Body& b) {
-            if (!b.motion.waypoints.empty()) {
-                BodyMotion once = b.motion;
-                once.loop = false;
-                waiting_paths_.emplace_back(e, std::move(once));
-            }
-        });
-        for (const auto& [e, motion] : waiting_paths_) {
-            sim_->set_body_motion(e, BodyMotion{{motion.waypoints.front()}, 0.0f, false});
-        }
+        take_over_walker();
     }
     if (mode_ == CameraMode::walk) {
         ensure_walker(); // before the snapshot: a reset puts the player back too
@@ -169,6 +162,31 @@ void Game::ensure_walker() {
     if (!walker_ || !walker_->alive(*sim_)) {
         walker_.emplace(*sim_, camera_ ? camera_->camera().position : visuals_.camera.position);
     }
+}
+
+void Game::take_over_walker() {
+    const World& w = sim_->world();
+    Entity scene_walker;
+    w.each<Body>([&](Entity e, const Body& b) {
+        if (scene_walker.is_null() && b.motion.waypoints.size() > 1) {
+            scene_walker = e;
+        }
+    });
+    if (scene_walker.is_null() || ground_surface(w) == nullptr) {
+        return;
+    }
+    const Body& b = sim_->body(scene_walker);
+    std::vector<glm::vec2> points;
+    for (const glm::vec3& p : b.motion.waypoints) {
+        points.emplace_back(p.x, p.z);
+    }
+    if (b.motion.loop) {
+        points.push_back(points.front());
+    }
+    route_.emplace(points, b.motion.speed);
+    const glm::vec3 start = b.motion.waypoints.front();
+    sim_->remove(scene_walker);
+    walker_.emplace(*sim_, start);
 }
 
 void Game::say(const std::string& message) {
@@ -350,10 +368,15 @@ void Game::advance(double seconds) {
             walk = glm::normalize(walk);
         }
     }
+    const bool on_route = route_ && walker_ && frame_ >= *opt_.walk_once_at;
+    if (on_route && frame_ == *opt_.walk_once_at) {
+        say("the walker sets off, once round its path");
+    }
     const auto t0 = Clock::now();
     for (std::uint64_t i = 0; i < ticks; ++i) {
         if (walker_) {
-            walker_->before_tick(*sim_, walk); // also rolls the snowball on
+            // Also rolls the snowball on.
+            walker_->before_tick(*sim_, on_route ? route_->direction(*sim_, *walker_) : walk);
         }
         sim_->tick();
     }
@@ -361,15 +384,6 @@ void Game::advance(double seconds) {
         time_scale_.took(ticks, std::chrono::duration<double>(Clock::now() - t0).count());
     }
     ticks_last_frame_ = ticks;
-}
-
-void Game::start_paths() {
-    if (opt_.walk_once_at && frame_ == *opt_.walk_once_at && !waiting_paths_.empty()) {
-        for (const auto& [e, motion] : waiting_paths_) {
-            sim_->set_body_motion(e, motion);
-        }
-        say("the scene's walkers set off (once round their paths)");
-    }
 }
 
 std::string Game::moment_label() const {
@@ -515,6 +529,7 @@ int Game::run() {
     if (opt_.bare_meshes) {
         settings.mesh_snow = 0.0f;
     }
+    settings.min_snow_depth = opt_.min_snow_depth.value_or(settings.min_snow_depth);
     renderer_ = std::make_unique<Renderer>(*context_, settings);
     const CameraDef& def = visuals_.camera;
     camera_ = std::make_unique<CameraController>(ViewCamera::from_def(def), def.target);
@@ -554,7 +569,6 @@ int Game::run() {
         if (quit_) {
             break;
         }
-        start_paths();
         read_input(window_ ? static_cast<float>(seconds) : 1.0f / 30.0f);
         advance(seconds);
         if (mode_ == CameraMode::walk && walker_) {
@@ -589,10 +603,11 @@ void apply_timelapse(GameOptions& o) {
     o.snowfall = 40000.0f; // a storm: about 13 times the village's snowfall
     o.overrides.max_flakes = 400000;
     o.camera = CameraMode::fly; // the scene's own view over the village
-    o.walk_once_at = 40;        // the walker cuts its trail through a third of the storm's snow
+    o.walk_once_at = 55;        // the walker cuts its trail through 3 cm of snow
     o.contact_sheet = 8;
     o.video = true;
-    o.bare_meshes = true; // white is only the simulated snow
+    o.bare_meshes = true;      // white is only the simulated snow ...
+    o.min_snow_depth = 0.015f; // ... from 1.5 cm on: the trail reads dark until it refills
     o.out_dir = "out/timelapse";
 }
 

@@ -32,10 +32,12 @@ struct GameOptions {
     std::uint32_t time_scale = 1;    ///< simulated time per frame: 1, 4, 16 or 64 ×
     std::optional<float> snowfall;   ///< every emitter's rate (flakes/s)
     std::uint32_t contact_sheet = 0; ///< headless: moments in <out>/contact_sheet.png
-    /// The scene's path bodies stand at their first waypoint until this
-    /// frame, then follow their path once and stop (a trail cut once).
+    /// The player takes the place of the scene's walker (its first body with
+    /// a path): it stands at the path's start until this frame, then walks
+    /// the path once and stops (a trail cut once, in the player's tread).
     std::optional<std::uint64_t> walk_once_at;
-    bool bare_meshes = false; ///< meshes keep their colour: only simulated snow is white
+    bool bare_meshes = false;            ///< meshes keep their colour: only simulated snow is white
+    std::optional<float> min_snow_depth; ///< renderer: thinner snow shows the bare top (m)
     SceneOverrides overrides;
 };
 

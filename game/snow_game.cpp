@@ -23,15 +23,17 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
                       or a ground surface, else fly)
   --time-scale N      simulated time per frame: 1, 4, 16 or 64 times (key T)
   --snowfall RATE     every emitter's rate, flakes/s (0 < RATE <= 1000000)
-  --walk-once-at F    the scene's path bodies wait at their first waypoint until
-                      frame F, then follow their path once and stop
+  --walk-once-at F    the player takes the scene walker's place: it waits at its
+                      path's start until frame F, then walks the path once
   --bare-meshes       meshes keep their colour: only the simulated snow is white
+  --min-snow-depth M  snow thinner than M metres fades to the bare top (default 0.002)
   --contact-sheet N   headless: N moments (2..16) of the run in DIR/contact_sheet.png
   --timelapse         the village storm as a headless time-lapse: --headless
                       --frames 120 --size 640x360 --quality low --time-scale 64
                       --snowfall 40000 --max-flakes 400000 --camera fly
-                      --walk-once-at 40 --contact-sheet 8 --video --bare-meshes
-                      --out out/timelapse (flags after it override these)
+                      --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
+                      --min-snow-depth 0.015 --out out/timelapse (flags after it
+                      override these)
 )";
 constexpr const char* usage_tail =
     R"(  --inject LIST       scripted keys: FRAME:KEY presses and FRAME:MOVE:FRAMES holds
@@ -112,6 +114,8 @@ snow::GameOptions parse(int argc, char** argv) {
             o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
         } else if (f == "--bare-meshes") {
             o.bare_meshes = true;
+        } else if (f == "--min-snow-depth") {
+            o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
         } else if (f == "--contact-sheet") {
             o.contact_sheet = static_cast<std::uint32_t>(parse_uint(f, args.value(), 2, 16));
         } else if (f == "--timelapse") {

@@ -215,4 +215,20 @@ TrailReport Walker::trail(const Simulation& sim) const {
     return r;
 }
 
+WalkRoute::WalkRoute(std::vector<glm::vec2> points, float speed)
+    : points_(std::move(points)), speed_(speed) {}
+
+glm::vec2 WalkRoute::direction(const Simulation& sim, const Walker& walker) {
+    const float step = speed_ * sim.config().dt;
+    const glm::vec2 at = xz(sim.body(walker.body()).position);
+    while (!done() && glm::distance(points_[next_], at) <= step) {
+        ++next_; // reached (this tick's step would overshoot it)
+    }
+    if (done() || step <= 0.0f) {
+        return glm::vec2(0.0f);
+    }
+    const glm::vec2 d = points_[next_] - at;
+    return d / glm::length(d) * std::min(1.0f, speed_ / walker.settings().speed);
+}
+
 } // namespace snow

@@ -66,6 +66,7 @@ class Walker {
     /// The eye: the snow top under the player plus the eye height.
     [[nodiscard]] glm::vec3 eye(const Simulation& sim) const;
     [[nodiscard]] Entity body() const { return body_; }
+    [[nodiscard]] const WalkerSettings& settings() const { return s_; }
     /// True while the body exists (a reset to before it was added removes it).
     [[nodiscard]] bool alive(const Simulation& sim) const;
     /// After a reset that kept the body: the trail starts again where it stands.
@@ -89,6 +90,23 @@ class Walker {
     Entity body_;
     Entity ball_;
     std::vector<glm::vec2> trail_; ///< where it stood, a point every 0.25 m
+};
+
+/// A route the player walks once, e.g. the path of the scene's walker: each
+/// tick, the direction towards its next point.
+class WalkRoute {
+  public:
+    /// `points` (x, z), the first where the player starts; `speed` in m/s.
+    WalkRoute(std::vector<glm::vec2> points, float speed);
+    /// The direction for Walker::before_tick this tick (scaled to `speed`);
+    /// zero once the last point is reached.
+    [[nodiscard]] glm::vec2 direction(const Simulation& sim, const Walker& walker);
+    [[nodiscard]] bool done() const { return next_ >= points_.size(); }
+
+  private:
+    std::vector<glm::vec2> points_;
+    float speed_;
+    std::size_t next_ = 1;
 };
 
 } // namespace snow

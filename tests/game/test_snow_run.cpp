@@ -25,10 +25,9 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
     EXPECT_EQ(j["state_hash"].get<std::string>().size(), 16u);
     const auto& m = j["mass"];
     EXPECT_GT(m["unit_kg"].get<double>(), 0.0);
-    EXPECT_EQ(m["spawned"].get<std::uint64_t>(), m["airborne"].get<std::uint64_t>() +
-                                                     m["settled"].get<std::uint64_t>() +
-                                                     m["carried"].get<std::uint64_t>() +
-                                                     m["removed"].get<std::uint64_t>());
+    EXPECT_EQ(m["spawned"].get<std::uint64_t>(),
+              m["airborne"].get<std::uint64_t>() + m["settled"].get<std::uint64_t>() +
+                  m["carried"].get<std::uint64_t>() + m["removed"].get<std::uint64_t>());
     EXPECT_GT(m["settled"].get<std::uint64_t>(), 0u);
     EXPECT_GT(j["flakes"]["alive"].get<int>(), 0);
     EXPECT_GE(j["flakes"]["max_alive"].get<int>(), j["flakes"]["alive"].get<int>());

@@ -39,7 +39,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
     EXPECT_GT(c.spilled_units, 0u); // roof edges shed snow
     EXPECT_GT(c.rolled, 0u);        // rules 2/3 of [ZCL §IV] fired
     EXPECT_GT(c.occlusion_refreshes, 0u);
-    EXPECT_GT(c.carved_units, 0u); // the walker's trail
+    EXPECT_GT(c.carved_units, 0u);     // the walker's trail
     EXPECT_GT(sim.mass().removed, 0u); // the snowman and the bounds take flakes
 }
 
