@@ -520,7 +520,8 @@ int Game::run() {
     if (!opt_.out_dir.empty() && !window_) {
         recorder_.emplace(opt_.out_dir);
         if (opt_.contact_sheet > 0 && opt_.frames > 0) {
-            sheet_.emplace(opt_.frames, opt_.contact_sheet, 4, 2);
+            // Tiles at most 240 px wide: four to a row make a README-sized sheet.
+            sheet_.emplace(opt_.frames, opt_.contact_sheet, 4, (opt_.width + 239) / 240);
         }
     }
     RenderSettings settings;

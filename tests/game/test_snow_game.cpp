@@ -36,16 +36,30 @@ TEST(SnowGame, HeadlessWritesFramesAndSaysWhere) {
     EXPECT_NE(r.out.find("wrote 3 frames to"), std::string::npos) << r.out;
 }
 
-TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
+/// snow_game in a window on a private Xvfb server; nothing when Xvfb is not installed.
+std::optional<snow::test::AppRun> run_game_in_xvfb(const std::string& args) {
     const auto xvfb_binary = snow::test::Xvfb::find();
     if (!xvfb_binary) {
-        GTEST_SKIP() << "Xvfb is not installed: the window test cannot run (apt-get install xvfb)";
+        return std::nullopt;
     }
     snow::test::Xvfb server;
     std::string display, error;
-    ASSERT_TRUE(server.start(*xvfb_binary, display, error)) << error;
-    const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display,
-                                          "--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
+    if (!server.start(*xvfb_binary, display, error)) {
+        ADD_FAILURE() << error;
+        return snow::test::AppRun{};
+    }
+    return run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display, args);
+}
+
+constexpr const char* no_xvfb =
+    "Xvfb is not installed: the window test cannot run (apt-get install xvfb)";
+
+TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
+    const auto run = run_game_in_xvfb("--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
+    if (!run) {
+        GTEST_SKIP() << no_xvfb;
+    }
+    const snow::test::AppRun& r = *run;
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
     const std::regex paused("paused at tick ([0-9]+)");
@@ -109,15 +123,11 @@ TEST(SnowGame, HeadlessPlayerWalksForwardAndLeavesATrench) {
 }
 
 TEST(SnowGame, WindowUnderXvfbPlayerWalksForwardAndLeavesATrench) {
-    const auto xvfb_binary = snow::test::Xvfb::find();
-    if (!xvfb_binary) {
-        GTEST_SKIP() << "Xvfb is not installed: the window test cannot run (apt-get install xvfb)";
+    const auto run = run_game_in_xvfb(walk_args);
+    if (!run) {
+        GTEST_SKIP() << no_xvfb;
     }
-    snow::test::Xvfb server;
-    std::string display, error;
-    ASSERT_TRUE(server.start(*xvfb_binary, display, error)) << error;
-    const snow::test::AppRun r =
-        run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display, walk_args);
+    const snow::test::AppRun& r = *run;
     EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
     // A window's ticks follow the wall clock: 90 frames walk at least a metre
     // unless the frames run faster than 90 per 0.7 s.
@@ -141,8 +151,8 @@ TEST(SnowGame, TimelapseWritesFramesAndAContactSheet) {
     const std::filesystem::path sheet = dir / "contact_sheet.png";
     ASSERT_TRUE(std::filesystem::exists(sheet)) << r.out;
     const snow::Image image = snow::read_png(sheet);
-    EXPECT_EQ(image.width, 4 * 80 + 5 * 4);
-    EXPECT_EQ(image.height, 2 * 48 + 3 * 4);
+    EXPECT_EQ(image.width, 4 * 160 + 5 * 4); // 160 px frames need no shrinking
+    EXPECT_EQ(image.height, 2 * 96 + 3 * 4);
     EXPECT_TRUE(std::filesystem::exists(dir / "frame_00008.png"));
 }
 
