@@ -12,7 +12,6 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include <optional>
 #include <string>
 #include <vector>
 
