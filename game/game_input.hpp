@@ -11,23 +11,30 @@
 
 namespace snow {
 
+/// Keys that act once per press.
 enum class Action : std::uint8_t {
-    pause,        ///< P: pause / resume the simulation
-    step,         ///< N: advance one tick while paused
-    reset,        ///< R: back to the scene's first tick
-    rate_up,      ///< +: more snowfall
-    rate_down,    ///< -: less snowfall
-    wind_left,    ///< left arrow: rotate wind 15° counter-clockwise (seen from above)
-    wind_right,   ///< right arrow: rotate wind 15° clockwise
-    wind_up,      ///< up arrow: stronger wind
-    wind_down,    ///< down arrow: weaker wind
-    toggle_fog,   ///< F: fog on / off
-    quality_next, ///< Q: next quality preset (reloads the scene)
-    screenshot,   ///< F12 or C: write a PNG
-    toggle_orbit, ///< O: fly camera <-> orbit camera
-    toggle_help,  ///< H: show / hide the key list
-    quit,         ///< Esc
+    pause,         ///< P: pause / resume the simulation
+    step,          ///< N: advance one tick while paused
+    reset,         ///< R: back to the scene's first tick
+    rate_up,       ///< +: more snowfall
+    rate_down,     ///< -: less snowfall
+    wind_left,     ///< left arrow: rotate wind 15° counter-clockwise (seen from above)
+    wind_right,    ///< right arrow: rotate wind 15° clockwise
+    wind_up,       ///< up arrow: stronger wind
+    wind_down,     ///< down arrow: weaker wind
+    toggle_fog,    ///< F: fog on / off
+    quality_next,  ///< Q: next quality preset (reloads the scene)
+    screenshot,    ///< F12 or C: write a PNG
+    next_camera,   ///< O: walk -> fly -> orbit camera
+    time_scale,    ///< T: simulated time per frame x1, x4, x16, x64
+    push_snowball, ///< B: push the snowball ahead (make one if there is none)
+    toggle_help,   ///< H: show / hide the key list
+    quit,          ///< Esc
 };
+
+/// Keys that act while held: walking (walk camera) or flying (fly camera).
+enum class MoveKey : std::uint8_t { forward, back, left, right };
+inline constexpr std::size_t move_key_count = 4;
 
 /// The key name and description of every action, for the help overlay.
 struct KeyHelp {
@@ -38,6 +45,8 @@ struct KeyHelp {
 
 /// The action bound to a GLFW key code, if any.
 [[nodiscard]] std::optional<Action> action_for_key(int glfw_key);
+/// The GLFW key code of a movement key.
+[[nodiscard]] int glfw_key_of(MoveKey k);
 
 /// A key press scheduled at a frame number.
 struct InjectedKey {
@@ -45,8 +54,25 @@ struct InjectedKey {
     Action action = Action::pause;
 };
 
-/// Parses "FRAME:KEY,FRAME:KEY,..." with KEY one of P N R + - LEFT RIGHT UP
-/// DOWN F Q C O H ESC; throws std::invalid_argument naming the bad item.
-[[nodiscard]] std::vector<InjectedKey> parse_injected_keys(std::string_view text);
+/// A movement key held from `frame` for `frames` frames.
+struct InjectedHold {
+    std::uint64_t frame = 0;
+    std::uint64_t frames = 1;
+    MoveKey key = MoveKey::forward;
+};
+
+/// A parsed --inject list.
+struct KeyScript {
+    std::vector<InjectedKey> presses;
+    std::vector<InjectedHold> holds;
+    /// True while a hold of `key` covers `frame`.
+    [[nodiscard]] bool held(MoveKey key, std::uint64_t frame) const;
+};
+
+/// Parses "ITEM,ITEM,..." with ITEM either FRAME:KEY (a press; KEY one of P
+/// N R + - LEFT RIGHT UP DOWN F Q C O T B H ESC) or FRAME:MOVE[:FRAMES] (W A
+/// S D held for FRAMES frames, default 1). Throws std::invalid_argument
+/// naming the bad item; a list or item naming no key is an error.
+[[nodiscard]] KeyScript parse_key_script(std::string_view text);
 
 } // namespace snow

@@ -39,8 +39,19 @@ void Hud::draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& 
     ImGui::Text("%.1f fps  tick %llu%s", static_cast<double>(info.fps),
                 static_cast<unsigned long long>(sim.tick_count()), info.paused ? "  PAUSED" : "");
     ImGui::Text("flakes alive %u (drawn %u)", sim.flakes().alive, frame.flakes_drawn);
-    ImGui::Text("settled %.3f kg, airborne %.3f kg", static_cast<double>(m.settled) * unit_kg,
-                static_cast<double>(m.airborne) * unit_kg);
+    const auto kg = [](std::uint64_t units) { return static_cast<double>(units) * unit_kg; };
+    ImGui::Text("snow %.3f kg spawned = %.3f airborne + %.3f settled", kg(m.spawned),
+                kg(m.airborne), kg(m.settled));
+    ImGui::Text("    + %.3f carried + %.3f removed%s", kg(m.carried), kg(m.removed),
+                m.balanced() ? "" : "  UNBALANCED");
+    ImGui::Text("time x%u: %llu ticks/frame%s", info.time_scale,
+                static_cast<unsigned long long>(info.ticks_per_frame),
+                info.ticks_capped ? " (held back by the frame budget)" : "");
+    if (info.depth_under) {
+        ImGui::Text("snow under you %.1f cm, 1 m ahead %.1f cm",
+                    100.0 * static_cast<double>(*info.depth_under),
+                    100.0 * static_cast<double>(info.depth_ahead.value_or(0.0f)));
+    }
     ImGui::Text("quality %s, camera %s, fog %s", info.quality.c_str(), info.camera_mode.c_str(),
                 info.fog_on ? "on" : "off");
     if (ImGui::CollapsingHeader("ms per system", ImGuiTreeNodeFlags_DefaultOpen)) {

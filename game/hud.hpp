@@ -1,11 +1,14 @@
 /// @file hud.hpp
 /// @brief The on-screen HUD of the windowed game (Dear ImGui): fps, flakes,
-/// settled mass, ms per system and per render pass, and the key list.
+/// the mass ledger, the time scale, the snow under the walking player, ms per
+/// system and per render pass, and the key list.
 #pragma once
 
 #include "render/frame_timings.hpp"
 #include "systems/simulation.hpp"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 struct GLFWwindow;
@@ -20,6 +23,11 @@ struct HudInfo {
     std::string quality;
     std::string camera_mode;
     std::string last_message;
+    std::uint32_t time_scale = 1;      ///< simulated time per frame (×)
+    std::uint64_t ticks_per_frame = 0; ///< ticks the last frame ran
+    bool ticks_capped = false;         ///< the frame budget held them back
+    std::optional<float> depth_under;  ///< walk: snow under the player (m)
+    std::optional<float> depth_ahead;  ///< walk: snow 1 m ahead (m)
 };
 
 class Hud {

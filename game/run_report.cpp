@@ -28,8 +28,8 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
     j["threads"] = cfg.threads;
     j["integrator"] = std::string(integrator_name(cfg.integrator));
     j["state_hash"] = hash_hex(sim.state_hash());
-    j["mass"] = {{"unit_kg", unit_kg},   {"spawned", m.spawned}, {"airborne", m.airborne},
-                 {"settled", m.settled}, {"carried", m.carried}, {"removed", m.removed},
+    j["mass"] = {{"unit_kg", unit_kg},      {"spawned", m.spawned}, {"airborne", m.airborne},
+                 {"settled", m.settled},    {"carried", m.carried}, {"removed", m.removed},
                  {"balanced", m.balanced()}};
     j["flakes"] = {{"alive", sim.flakes().alive},
                    {"max_alive", sim.flakes().max_alive},
@@ -75,8 +75,8 @@ std::string run_report_text(const Simulation& sim, const RunInfo& info) {
        << cfg.threads << " thread(s), integrator " << integrator_name(cfg.integrator) << ")\n"
        << "state hash " << hash_hex(sim.state_hash()) << "\n"
        << "mass units spawned " << m.spawned << " = airborne " << m.airborne << " + settled "
-       << m.settled << " + carried " << m.carried << " + removed " << m.removed << (m.balanced() ? "  (exact)" : "  (MISMATCH)")
-       << "\n"
+       << m.settled << " + carried " << m.carried << " + removed " << m.removed
+       << (m.balanced() ? "  (exact)" : "  (MISMATCH)") << "\n"
        << "flakes     alive " << sim.flakes().alive << ", max alive " << sim.flakes().max_alive
        << "\n"
        << "nonfinite  " << sim.nonfinite_count() << "\n"

@@ -2,6 +2,7 @@
 #include "game/cli_args.hpp"
 #include "game/game_app.hpp"
 #include "game/quality.hpp"
+#include "game/time_scale.hpp"
 
 #include <cstdio>
 #include <stdexcept>
@@ -18,9 +19,25 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
   --size WxH          window / image size (default 1280x720)
   --quality NAME      low | medium | high (default medium)
   --warmup N          simulate N ticks before the first frame
+  --camera MODE       walk | fly | orbit (default walk where the scene has a cover
+                      or a ground surface, else fly)
+  --time-scale N      simulated time per frame: 1, 4, 16 or 64 times (key T)
+  --snowfall RATE     every emitter's rate, flakes/s (0 < RATE <= 1000000)
+  --walk-once-at F    the player takes the scene walker's place: it waits at its
+                      path's start until frame F, then walks the path once
+  --bare-meshes       meshes keep their colour: only the simulated snow is white
+  --min-snow-depth M  snow thinner than M metres fades to the bare top (default 0.002)
+  --contact-sheet N   headless: N moments (2..16) of the run in DIR/contact_sheet.png
+  --timelapse         the village storm as a headless time-lapse: --headless
+                      --frames 120 --size 640x360 --quality low --time-scale 64
+                      --snowfall 40000 --max-flakes 400000 --camera fly
+                      --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
+                      --min-snow-depth 0.015 --out out/timelapse (flags after it
+                      override these)
 )";
 constexpr const char* usage_tail =
-    R"(  --inject LIST       scripted keys, e.g. "10:P,20:N,40:ESC" (frame:key)
+    R"(  --inject LIST       scripted keys: FRAME:KEY presses and FRAME:MOVE:FRAMES holds
+                      of W A S D, e.g. "0:W:60,10:B,80:ESC"
   --video             headless: also encode DIR/snow.mp4 if ffmpeg is installed
   --help              this text
 In the window press H for the key list.
@@ -71,12 +88,38 @@ snow::GameOptions parse(int argc, char** argv) {
             o.warmup_ticks = parse_uint(f, args.value(), 0, 100'000'000);
         } else if (f == "--inject") {
             try {
-                o.inject = snow::parse_injected_keys(args.value());
+                o.inject = snow::parse_key_script(args.value());
             } catch (const std::invalid_argument& e) {
                 throw UsageError{e.what()};
             }
         } else if (f == "--video") {
             o.video = true;
+        } else if (f == "--camera") {
+            const std::string_view m = args.value();
+            o.camera = snow::find_camera_mode(m);
+            if (!o.camera) {
+                throw UsageError{"--camera: expected walk, fly or orbit, got '" + std::string(m) +
+                                 "'"};
+            }
+        } else if (f == "--time-scale") {
+            const std::string_view v = args.value();
+            const auto n = static_cast<std::uint32_t>(parse_uint(f, v, 1, 64));
+            if (!snow::TimeScale().set(n)) {
+                throw UsageError{"--time-scale: expected 1, 4, 16 or 64, got " + std::string(v)};
+            }
+            o.time_scale = n;
+        } else if (f == "--snowfall") {
+            o.snowfall = static_cast<float>(parse_positive(f, args.value(), 1.0e6));
+        } else if (f == "--walk-once-at") {
+            o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
+        } else if (f == "--bare-meshes") {
+            o.bare_meshes = true;
+        } else if (f == "--min-snow-depth") {
+            o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
+        } else if (f == "--contact-sheet") {
+            o.contact_sheet = static_cast<std::uint32_t>(parse_uint(f, args.value(), 2, 16));
+        } else if (f == "--timelapse") {
+            snow::apply_timelapse(o);
         } else {
             args.unknown();
         }

@@ -38,8 +38,9 @@ struct FrameContext {
 };
 
 /// Interface of a pass. Built-in order (Renderer::pass_names()):
-/// "sky" → "meshes" → "snow_surfaces" → "flakes"; far-field snow [LZ] goes
-/// before "flakes" and fog puffs [PE] after it, via Renderer::insert_pass.
+/// "sky" → "meshes" → "snow_surfaces" → "flakes"; moving bodies go before
+/// "snow_surfaces", far-field snow [LZ] before "flakes" and fog puffs [PE]
+/// after it, as the world declares them (or via Renderer::insert_pass).
 class RenderPass {
   public:
     virtual ~RenderPass() = default;

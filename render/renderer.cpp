@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include "render/body_pass.hpp"
 #include "render/flake_pass.hpp"
 #include "render/fog_puff_pass.hpp"
 #include "render/fog_table.hpp"
@@ -10,6 +11,7 @@
 #include "render/sky_pass.hpp"
 #include "render/spectral_pass.hpp"
 #include "render/surface_pass.hpp"
+#include "systems/body.hpp"
 #include "systems/fog.hpp"
 #include "systems/occlusion.hpp"
 
@@ -175,6 +177,13 @@ void Renderer::Impl::add_effect_passes(const World& world) {
         const auto flakes = std::find_if(passes.begin(), passes.end(),
                                          [](const auto& p) { return p->name() == "flakes"; });
         passes.insert(flakes, std::make_unique<SpectralPass>());
+    }
+    if (world.count<Body>() > 0 && !has_pass(BodyPass::pass_name)) {
+        // Opaque, beside the meshes: the snow surfaces blend over both.
+        const auto surfaces = std::find_if(passes.begin(), passes.end(), [](const auto& p) {
+            return p->name() == "snow_surfaces";
+        });
+        passes.insert(surfaces, std::make_unique<BodyPass>());
     }
     const Fog* fog = world.try_resource<Fog>();
     if (fog != nullptr && !fog->puffs.empty() && !has_pass(FogPuffPass::pass_name)) {

@@ -23,6 +23,8 @@ namespace snow {
 /// Create, use and destroy it with `context` current. Passes, in order:
 ///   "sky"           fogged sky (only with a Fog resource; else the clear colour)
 ///   "meshes"        SceneVisuals::meshes, lit, snow-white where exposed [SKY]
+///   (moving bodies at this tick's pose: "bodies", inserted before
+///    "snow_surfaces" from the first frame whose world has a Body)
 ///   "snow_surfaces" SnowSurface tiled heightfields + skirts [WF §6]
 ///   (far-field spectral snow [LZ]: insert_pass("flakes", ...))
 ///   "flakes"        FlakePool point sprites ([ZCL], [SKY])

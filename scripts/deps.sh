@@ -13,6 +13,7 @@ packages=(
     googletest libgtest-dev libbenchmark-dev     # snow_tests, snow_bench
     xvfb xauth                                   # window tests without a display
     gnuplot-nox                                  # plots in docs/
+    ffmpeg                                       # play.sh headless: the time-lapse as MP4
 )
 # The glTF validator test (npm gltf-validator) needs node and npm; any
 # install of them will do, so Debian's are added only when there are none.

@@ -214,7 +214,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if (surfaces[i]) {
             through_facade(prefix, [&] { return sim->add_surface(*surfaces[i], owner); });
         }
-        add_renderables(visuals, node);
+        if (!is_body(role)) {
+            add_renderables(visuals, node); // the renderer draws bodies where they are
+        }
         if (const auto& light = d.lights[i]) {
             visuals.lights.push_back(PointLight{node.position, light->color, light->intensity});
         }

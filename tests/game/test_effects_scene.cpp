@@ -42,7 +42,8 @@ Frame render_scene(const std::string& name, std::uint64_t ticks) {
 
 TEST(RenderEffectsScene, VillageWithoutEffectsRunsOnlyTheBuiltInPasses) {
     const Frame f = render_scene("village.gltf", 1);
-    const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
+    // The walker is a moving body: it brings the bodies pass.
+    const std::vector<std::string> builtin = {"sky", "meshes", "bodies", "snow_surfaces", "flakes"};
     EXPECT_EQ(f.passes, builtin);
 }
 
@@ -50,7 +51,7 @@ TEST(RenderGolden, VillageEffectsScene) {
     // Four seconds of snowfall: particles near the camera, the spectral layer
     // over the sky beyond them, the layered fog low over the ground and a puff.
     const Frame f = render_scene("village_effects.gltf", 240);
-    const std::vector<std::string> passes = {"sky",           "meshes", "snow_surfaces",
+    const std::vector<std::string> passes = {"sky",           "meshes", "bodies",   "snow_surfaces",
                                              "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(f.passes, passes);
     EXPECT_TRUE(matches_golden(f.image, "village_effects"));

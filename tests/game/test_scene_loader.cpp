@@ -48,8 +48,8 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_EQ(w.count<MeshCollider>(), 2u);   // roof sides
     EXPECT_EQ(w.count<SnowSurface>(), 6u);    // ground, 2 roof sides, porch, garage, the cover
     EXPECT_EQ(w.count<SnowCover>(), 1u);
-    EXPECT_EQ(w.count<Body>(), 1u); // the walker
-    EXPECT_EQ(r.visuals.meshes.size(), 13u);
+    EXPECT_EQ(w.count<Body>(), 1u);          // the walker
+    EXPECT_EQ(r.visuals.meshes.size(), 12u); // every node but the walker (drawn as a body)
     EXPECT_EQ(r.visuals.lights.size(), 3u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     EXPECT_TRUE(w.has_resource<Wind>());

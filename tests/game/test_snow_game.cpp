@@ -1,12 +1,18 @@
 // snow_game as a player starts it: headless frames to PNG, a window under
-// Xvfb that reacts to injected keys (pause, step) and exits cleanly, and
-// exit status 2 for a bad command line.
+// Xvfb that reacts to injected keys (pause, step) and exits cleanly, the walk
+// camera's player walking forward on injected keys and leaving a trench (in
+// a window and headless), the time-lapse's files, and exit status 2 for a
+// bad command line.
 #include "tests/support/run_app.hpp"
 #include "tests/support/xvfb.hpp"
 
 #include <gtest/gtest.h>
 
+#include <snow/render.hpp>
+
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <string>
 
@@ -30,16 +36,30 @@ TEST(SnowGame, HeadlessWritesFramesAndSaysWhere) {
     EXPECT_NE(r.out.find("wrote 3 frames to"), std::string::npos) << r.out;
 }
 
-TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
+/// snow_game in a window on a private Xvfb server; nothing when Xvfb is not installed.
+std::optional<snow::test::AppRun> run_game_in_xvfb(const std::string& args) {
     const auto xvfb_binary = snow::test::Xvfb::find();
     if (!xvfb_binary) {
-        GTEST_SKIP() << "Xvfb is not installed: the window test cannot run (apt-get install xvfb)";
+        return std::nullopt;
     }
     snow::test::Xvfb server;
     std::string display, error;
-    ASSERT_TRUE(server.start(*xvfb_binary, display, error)) << error;
-    const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display,
-                                          "--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
+    if (!server.start(*xvfb_binary, display, error)) {
+        ADD_FAILURE() << error;
+        return snow::test::AppRun{};
+    }
+    return run_game("MESA_SHADER_CACHE_DISABLE=true DISPLAY=" + display, args);
+}
+
+constexpr const char* no_xvfb =
+    "Xvfb is not installed: the window test cannot run (apt-get install xvfb)";
+
+TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
+    const auto run = run_game_in_xvfb("--size 320x240 --inject 3:P,5:N,6:N,8:ESC");
+    if (!run) {
+        GTEST_SKIP() << no_xvfb;
+    }
+    const snow::test::AppRun& r = *run;
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
     const std::regex paused("paused at tick ([0-9]+)");
@@ -59,9 +79,114 @@ TEST(SnowGame, WindowUnderXvfbReactsToInjectedKeys) {
         << r.out;
 }
 
+/// What the game says of the player's walk at the end of a run.
+struct Walk {
+    double walked = 0.0, on_trail = 0.0, beside = 0.0;
+    int samples = 0;
+};
+std::optional<Walk> walk_report(const std::string& out) {
+    const std::regex line("player walked ([0-9.]+) m from .*; snow on its trail ([0-9.]+) mm, 1 "
+                          "m beside it ([0-9.]+) mm \\(([0-9]+) samples\\)");
+    std::smatch m;
+    if (!std::regex_search(out, m, line)) {
+        return std::nullopt;
+    }
+    return Walk{std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stoi(m[4])};
+}
+
+/// The village after 10 s of a heavy snowfall (a few millimetres): the
+/// player holds W from the first frame and Esc ends the run.
+const std::string walk_args = "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 "
+                              "--warmup 300 --inject 0:W:90,100:ESC";
+
+void expect_trench(const snow::test::AppRun& r, double at_least_m) {
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("walk camera"), std::string::npos) << r.out;
+    const auto walk = walk_report(r.out);
+    ASSERT_TRUE(walk) << r.out;
+    EXPECT_GT(walk->walked, at_least_m) << r.out;
+    EXPECT_GE(walk->samples, 2) << r.out;
+    EXPECT_GT(walk->beside, 0.5) << "snow to walk through: " << r.out;
+    EXPECT_LT(walk->on_trail, 0.5 * walk->beside) << "a trench behind the player: " << r.out;
+}
+
+TEST(SnowGame, HeadlessPlayerWalksForwardAndLeavesATrench) {
+    const std::filesystem::path dir =
+        std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_walk";
+    const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true",
+                                          "--headless --out " + dir.string() + " " + walk_args);
+    // Headless frames are 1/30 s: 90 frames of W at 1.4 m/s are 4.2 m.
+    expect_trench(r, 4.1);
+    const auto walk = walk_report(r.out);
+    ASSERT_TRUE(walk);
+    EXPECT_LT(walk->walked, 4.3);
+}
+
+TEST(SnowGame, WindowUnderXvfbPlayerWalksForwardAndLeavesATrench) {
+    const auto run = run_game_in_xvfb(walk_args);
+    if (!run) {
+        GTEST_SKIP() << no_xvfb;
+    }
+    const snow::test::AppRun& r = *run;
+    EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
+    // A window's ticks follow the wall clock: 90 frames walk at least a metre
+    // unless the frames run faster than 90 per 0.7 s.
+    expect_trench(r, 1.0);
+}
+
+TEST(SnowGame, TimelapseWritesFramesAndAContactSheet) {
+    const std::filesystem::path dir =
+        std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_timelapse";
+    std::filesystem::remove_all(dir);
+    // The time-lapse's settings, shortened: 9 frames of 64 ticks, 6 moments.
+    const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true",
+                                          "--timelapse --frames 9 --size 160x96 --snowfall 3000 "
+                                          "--walk-once-at 3 --contact-sheet 6 --out " +
+                                              dir.string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("fly camera"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("done after 9 frames, tick 576;"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("the walker sets off"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("contact sheet (6 moments)"), std::string::npos) << r.out;
+    const std::filesystem::path sheet = dir / "contact_sheet.png";
+    ASSERT_TRUE(std::filesystem::exists(sheet)) << r.out;
+    const snow::Image image = snow::read_png(sheet);
+    EXPECT_EQ(image.width, 4 * 160 + 5 * 4); // 160 px frames need no shrinking
+    EXPECT_EQ(image.height, 2 * 96 + 3 * 4);
+    EXPECT_TRUE(std::filesystem::exists(dir / "frame_00008.png"));
+}
+
+TEST(SnowGame, KeyInjectionNamingNoKeyIsOneError) {
+    for (const char* bad : {"--inject 10", "--inject 10:", "--inject ''", "--inject 4:P,,6:N"}) {
+        const snow::test::AppRun r =
+            run_game("MESA_SHADER_CACHE_DISABLE=true", std::string("--headless ") + bad);
+        EXPECT_EQ(r.status, 2) << bad << ": " << r.out;
+        EXPECT_NE(r.out.find("names no key"), std::string::npos) << bad << ": " << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << bad << ": " << r.out;
+    }
+}
+
+TEST(SnowGame, DefaultCameraWalksWhereTheSceneHasSnowGround) {
+    const snow::test::AppRun village =
+        run_game("MESA_SHADER_CACHE_DISABLE=true", "--headless --frames 1 --size 64x48 --out " +
+                                                       std::string(SNOW_BINARY_DIR) +
+                                                       "/test_out/game_camera");
+    EXPECT_NE(village.out.find("walk camera"), std::string::npos) << village.out;
+    const snow::test::AppRun plain =
+        run_game("MESA_SHADER_CACHE_DISABLE=true",
+                 "--headless --frames 1 --size 64x48 --scene " + std::string(SNOW_SOURCE_DIR) +
+                     "/assets/testdata/plain.gltf --out " + std::string(SNOW_BINARY_DIR) +
+                     "/test_out/game_camera");
+    EXPECT_EQ(plain.status, 0) << plain.out;
+    EXPECT_NE(plain.out.find("fly camera"), std::string::npos) << plain.out;
+}
+
 TEST(SnowGame, BadArgumentsExitWithStatus2) {
     for (const char* bad : {"--bogus", "--frames 0", "--size 12", "--quality ultra", "--inject 3:Z",
-                            "--scene /nonexistent.gltf --headless"}) {
+                            "--inject 1:W:0", "--camera drone", "--time-scale 8", "--snowfall 0",
+                            "--contact-sheet 1", "--scene /nonexistent.gltf --headless",
+                            "--camera walk --headless --frames 1 --scene " SNOW_SOURCE_DIR
+                            "/assets/testdata/plain.gltf"}) { // plain.gltf: no snow to walk on
         EXPECT_EQ(run_game("MESA_SHADER_CACHE_DISABLE=true", bad).status, 2) << bad;
     }
 }

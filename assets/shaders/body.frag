@@ -1,0 +1,14 @@
+// body.frag: a moving body, lit like the scene's meshes but never whitened by
+// the sky map (the map holds only static geometry, [SKY]).
+in vec3 v_world;
+in vec3 v_normal;
+out vec4 frag_color;
+uniform vec3 albedo;
+void main() {
+    vec3 n = normalize(v_normal);
+    vec3 color = albedo * irradiance(n, v_world);
+#ifdef FOG
+    color = apply_fog(color, v_world);
+#endif
+    frag_color = vec4(color, 1.0);
+}
