@@ -183,6 +183,11 @@ void read_value(const Json& j, const std::string& field, const Range& range,
     read_elements(j, field, range, out);
 }
 
+bool fills(std::string_view row, std::string_view plain) {
+    return plain.starts_with(row) &&
+           (plain.size() == row.size() || plain[row.size()] == '.' || plain[row.size()] == '[');
+}
+
 void require_object(const Json& j, const std::string& path) {
     if (!j.is_object()) {
         scene_fail(path, "must be an object (got " + json_type_name(j) + ")");
