@@ -103,6 +103,15 @@ void check_fields(Invalid& err, std::string_view prefix, const FieldRule<T> (&ta
     }
 }
 
+/// The first field of `value` that its row's range rejects, or no problem.
+template <typename T, std::size_t N>
+[[nodiscard]] Invalid check_fields(std::string_view prefix, const FieldRule<T> (&table)[N],
+                                   const T& value) {
+    Invalid err;
+    check_fields(err, prefix, table, value);
+    return err;
+}
+
 } // namespace snow
 
 /// Checks of values no table holds (derived sizes, handles, arguments); each

@@ -96,9 +96,11 @@ inline constexpr FieldRule<Fog> fog_fields[] = {
 
 /// `fog.puffs[i].*`.
 inline constexpr FieldRule<FogPuff> fog_puff_fields[] = {
-    {"center", &FogPuff::center},       {"sigma", &FogPuff::sigma, positive},
+    {"center", &FogPuff::center},
+    {"sigma", &FogPuff::sigma, positive},
     {"density", &FogPuff::density, non_negative},
-    {"frequency", &FogPuff::frequency}, {"phase", &FogPuff::phase},
+    {"frequency", &FogPuff::frequency},
+    {"phase", &FogPuff::phase},
 };
 
 /// `occlusion.*`: the sky-map camera [SKY].

@@ -25,8 +25,7 @@ void check_box(Invalid& e, std::string_view prefix, const Aabb& box) {
 } // namespace
 
 Invalid validate(const SimConfig& c) {
-    Invalid e;
-    check_fields(e, "simulation", sim_config_fields, c);
+    Invalid e = check_fields("simulation", sim_config_fields, c);
     check_box(e, "simulation.bounds", c.bounds);
     if (integrator_name(c.integrator) == "unknown") {
         check::fail(e, "simulation.integrator", "one of " + integrator_choices(),
@@ -36,8 +35,7 @@ Invalid validate(const SimConfig& c) {
 }
 
 Invalid validate(const Emitter& m) {
-    Invalid e;
-    check_fields(e, "emitter", emitter_fields, m);
+    Invalid e = check_fields("emitter", emitter_fields, m);
     check::ordered(e, "emitter", "mass_min_g", m.mass_min_g, "mass_max_g", m.mass_max_g);
     check::ordered(e, "emitter", "size_min", m.size_min, "size_max", m.size_max);
     check::ordered(e, "emitter", "fall_speed_min", m.fall_speed_min, "fall_speed_max",
@@ -52,20 +50,15 @@ Invalid validate(const Aabb& box) {
 }
 
 Invalid validate(const FlakeSpec& f) {
-    Invalid e;
-    check_fields(e, "flake", flake_fields, f);
-    return e;
+    return check_fields("flake", flake_fields, f);
 }
 
 Invalid validate(const Wind& w) {
-    Invalid e;
-    check_fields(e, "wind", wind_fields, w);
-    return e;
+    return check_fields("wind", wind_fields, w);
 }
 
 Invalid validate(const Fog& f) {
-    Invalid e;
-    check_fields(e, "fog", fog_fields, f);
+    Invalid e = check_fields("fog", fog_fields, f);
     check::ordered(e, "fog", "layer_bottom", f.layer_bottom, "layer_top", f.layer_top);
     for (std::size_t i = 0; i < f.puffs.size() && e.empty(); ++i) {
         check_fields(e, "fog.puffs[" + std::to_string(i) + "]", fog_puff_fields, f.puffs[i]);
@@ -74,8 +67,7 @@ Invalid validate(const Fog& f) {
 }
 
 Invalid validate(const SpectralSnow& s) {
-    Invalid e;
-    check_fields(e, "spectral", spectral_fields, s);
+    Invalid e = check_fields("spectral", spectral_fields, s);
     for (const auto& [field, size] :
          {std::pair{"spectral.size_xy", s.size_xy}, std::pair{"spectral.size_t", s.size_t}}) {
         if (!std::has_single_bit(size)) {
@@ -89,9 +81,7 @@ Invalid validate(const SpectralSnow& s) {
 }
 
 Invalid validate(const OcclusionCamera& cam) {
-    Invalid e;
-    check_fields(e, "occlusion", occlusion_fields, cam);
-    return e;
+    return check_fields("occlusion", occlusion_fields, cam);
 }
 
 Invalid validate(const BodyMotion& m) {
@@ -130,8 +120,7 @@ Invalid validate(const BodyDef& d) {
 }
 
 Invalid validate(const WindFieldDef& d) {
-    Invalid e;
-    check_fields(e, "wind.field", wind_field_fields, d);
+    Invalid e = check_fields("wind.field", wind_field_fields, d);
     const std::uint64_t cells = std::uint64_t{d.cells_x} * d.cells_y * d.cells_z;
     check::number(e, "wind.field.cells (total)", up_to(max_wind_field_cells),
                   static_cast<double>(cells));
@@ -139,14 +128,11 @@ Invalid validate(const WindFieldDef& d) {
 }
 
 Invalid validate(const SurfaceDef& def) {
-    Invalid e;
-    check_fields(e, "surface", surface_fields, def);
-    return e;
+    return check_fields("surface", surface_fields, def);
 }
 
 Invalid validate(const CoverDef& def) {
-    Invalid e;
-    check_fields(e, "cover", cover_fields, def);
+    Invalid e = check_fields("cover", cover_fields, def);
     check::ordered(e, "cover", "min.x", def.min_x, "max.x", def.max_x, true);
     check::ordered(e, "cover", "min.z", def.min_z, "max.z", def.max_z, true);
     return e;

@@ -105,10 +105,10 @@ constexpr Schema<Wind> wind_schema{wind_fields, wind_rows, wind_state};
 /// `wind.field.cells`: [x, y, z] cell counts.
 void read_field_cells(const Json& j, const std::string& field, WindFieldDef& d) {
     if (!j.is_array() || j.size() != 3) {
-        scene_fail(field, "must be an array of 3 cell counts [x, y, z] (got " +
-                              (j.is_array() ? std::to_string(j.size()) + " values"
-                                            : json_type_name(j)) +
-                              ")");
+        scene_fail(field,
+                   "must be an array of 3 cell counts [x, y, z] (got " +
+                       (j.is_array() ? std::to_string(j.size()) + " values" : json_type_name(j)) +
+                       ")");
     }
     std::uint32_t* const cells[] = {&d.cells_x, &d.cells_y, &d.cells_z};
     for (std::size_t i = 0; i < 3; ++i) {
