@@ -16,14 +16,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 namespace snow {
 
 namespace {
 
-constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 /// Height (m) above a raised base at which its former snow reappears, so it lands again.
 constexpr float reappear_height = 1.0e-3f;
 
