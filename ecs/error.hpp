@@ -4,6 +4,7 @@
 /// the field at fault, and field() gives that name alone.
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,13 @@ class Error : public std::runtime_error {
   private:
     std::string field_;
 };
+
+/// A number as error messages print it (6 significant digits).
+[[nodiscard]] inline std::string number_text(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
 
 /// Thrown for misuse of entity handles (stale, null) and missing components or resources.
 class EcsError : public Error {

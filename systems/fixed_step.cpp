@@ -7,7 +7,7 @@ namespace snow {
 FixedStep::FixedStep(double dt, std::uint32_t max_ticks_per_frame)
     : dt_(dt), max_ticks_(max_ticks_per_frame) {
     Invalid e;
-    check::positive(e, "fixed_step.dt", dt);
+    check::number(e, "fixed_step.dt", positive, dt);
     if (max_ticks_per_frame == 0) {
         check::fail(e, "fixed_step.max_ticks_per_frame", ">= 1", 0);
     }
@@ -16,7 +16,7 @@ FixedStep::FixedStep(double dt, std::uint32_t max_ticks_per_frame)
 
 std::uint32_t FixedStep::advance(double seconds) {
     Invalid e;
-    check::non_negative(e, "fixed_step.advance(seconds)", seconds);
+    check::number(e, "fixed_step.advance(seconds)", non_negative, seconds);
     throw_if(e);
     accumulated_ += seconds;
     std::uint32_t ticks = 0;

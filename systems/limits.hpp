@@ -4,6 +4,8 @@
 /// structures by them. A value past a limit is an input error naming its field.
 #pragma once
 
+#include "systems/units.hpp"
+
 #include <cstdint>
 
 namespace snow {
@@ -15,7 +17,10 @@ inline constexpr unsigned max_threads = 256;                    ///< job pool wo
 inline constexpr std::uint32_t max_smoothing_iterations = 4096; ///< per surface per tick
 
 // -- settings structs --
-inline constexpr double max_emitter_rate = 1.0e8;        ///< flakes per second
+inline constexpr double max_emitter_rate = 1.0e8; ///< flakes per second
+/// Flake masses an emitter may draw (g): one mass unit up to max_flake_units.
+inline constexpr double min_flake_mass_g = unit_kg * 1000.0;
+inline constexpr double max_flake_mass_g = min_flake_mass_g * max_flake_units;
 inline constexpr double max_flake_size = 1.0;            ///< diameter (m)
 inline constexpr double max_fall_speed = 1000.0;         ///< m/s
 inline constexpr double max_wind_base_component = 200.0; ///< |wind.base.x|, .y, .z (m/s)
@@ -33,6 +38,15 @@ inline constexpr std::uint32_t max_cell_units = (1u << 31) - 1;
 // -- covers --
 /// Largest cover (cells in all).
 inline constexpr std::uint64_t max_cover_cells = 4096ull * 4096ull;
+/// Steepest angle of repose a cover may use (degrees; its tangent stays finite).
+inline constexpr double max_repose_deg = 89.0;
+
+// -- the wind field --
+/// Largest cells_x·cells_y·cells_z a field may have.
+inline constexpr std::uint64_t max_wind_field_cells = 1ull << 24;
+inline constexpr std::uint32_t max_wind_field_update_every = 1u << 16; ///< ticks
+inline constexpr std::uint32_t max_pressure_iterations = 4096;         ///< SOR sweeps per step
+inline constexpr double max_eddy_viscosity = 10.0;                     ///< m²/s
 
 // -- moving bodies --
 inline constexpr double max_body_size = 100.0;   ///< radius, half extent or half height (m)

@@ -231,7 +231,7 @@ void Simulation::move_box(Entity box_collider, const Aabb& box) {
 Entity Simulation::add_sphere(const glm::vec3& center, float radius) {
     Invalid e;
     check::finite3(e, "sphere.center", center);
-    check::positive(e, "sphere.radius", radius);
+    check::number(e, "sphere.radius", positive, radius);
     throw_if(e);
     const Entity id = world_.create();
     world_.add<SphereCollider>(id, SphereCollider{center, radius});
@@ -262,15 +262,7 @@ Entity Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
 }
 
 void Simulation::set_occlusion(const OcclusionCamera& cam) {
-    Invalid e;
-    if (cam.resolution < 1 || cam.resolution > max_occlusion_resolution) {
-        check::fail(e, "occlusion.resolution",
-                    "in [1, " + std::to_string(max_occlusion_resolution) + "]", cam.resolution);
-    }
-    check::finite(e, "occlusion.tilt", cam.tilt);
-    check::at_most(e, "occlusion.tilt (magnitude, radians)", std::abs(cam.tilt),
-                   max_occlusion_tilt);
-    throw_if(e);
+    throw_if(validate(cam));
     world_.set_resource<OcclusionCamera>(cam);
     ++world_.resource<SourceVersions>().occlusion;
 }

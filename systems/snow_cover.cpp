@@ -16,14 +16,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 namespace snow {
 
 namespace {
 
-constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 /// Height (m) above a raised base at which its former snow reappears, so it lands again.
 constexpr float reappear_height = 1.0e-3f;
 
@@ -159,39 +157,17 @@ void derive_edges(SnowSurface& s, SnowCover& cover) {
 } // namespace
 
 SnowSurface make_cover_surface(const CoverDef& def) {
-    Invalid e;
-    check::finite(e, "cover.min.x", def.min_x);
-    check::finite(e, "cover.min.z", def.min_z);
-    check::finite(e, "cover.max.x", def.max_x);
-    check::finite(e, "cover.max.z", def.max_z);
-    if (e.empty() && !(def.max_x > def.min_x)) {
-        check::fail(e, "cover.max.x", "> cover.min.x (" + std::to_string(def.min_x) + ")",
-                    def.max_x);
-    }
-    if (e.empty() && !(def.max_z > def.min_z)) {
-        check::fail(e, "cover.max.z", "> cover.min.z (" + std::to_string(def.min_z) + ")",
-                    def.max_z);
-    }
-    check::positive(e, "cover.cell", def.cell);
-    check::non_negative(e, "cover.edge_limit", def.edge_limit);
-    check::positive(e, "cover.drop_limit", def.drop_limit);
-    check::positive(e, "cover.laplacian_limit", def.laplacian_limit);
-    check::positive(e, "cover.repose_deg", def.repose_deg);
-    check::at_most(e, "cover.repose_deg", def.repose_deg, 89.0);
+    Invalid e = validate(def);
     if (e.empty()) {
         const double along_x = std::round((static_cast<double>(def.max_x) - def.min_x) / def.cell);
         const double along_z = std::round((static_cast<double>(def.max_z) - def.min_z) / def.cell);
-        const double cells = along_x * along_z;
-        if (!(cells >= 1.0)) {
-            check::fail(e, "cover cells (extent / cell)", ">= 1", cells);
-        }
-        check::at_most(e, "cover cells (extent / cell)", cells,
-                       static_cast<double>(max_cover_cells));
+        check::number(e, "cover cells (extent / cell)",
+                      between(1, static_cast<double>(max_cover_cells)), along_x * along_z);
         // The surface beneath has its own per-side limit; name it in the cover's terms.
-        check::at_most(e, "cover cells along x (extent / cell)", along_x,
-                       max_surface_cells_per_side);
-        check::at_most(e, "cover cells along z (extent / cell)", along_z,
-                       max_surface_cells_per_side);
+        check::number(e, "cover cells along x (extent / cell)", up_to(max_surface_cells_per_side),
+                      along_x);
+        check::number(e, "cover cells along z (extent / cell)", up_to(max_surface_cells_per_side),
+                      along_z);
     }
     throw_if(e);
     SurfaceDef sd;

@@ -27,17 +27,7 @@ std::uint32_t cells_per_side(Invalid& err, const char* field, double size, doubl
 } // namespace
 
 SnowSurface make_surface(const SurfaceDef& def) {
-    Invalid e;
-    check::finite(e, "surface.x0", def.x0);
-    check::finite(e, "surface.z0", def.z0);
-    check::positive(e, "surface.size_x", def.size_x);
-    check::positive(e, "surface.size_z", def.size_z);
-    check::positive(e, "surface.cell", def.cell);
-    check::finite(e, "surface.base_y", def.base_y);
-    check::finite(e, "surface.slope_x", def.slope_x);
-    check::finite(e, "surface.slope_z", def.slope_z);
-    check::non_negative(e, "surface.edge_limit", def.edge_limit);
-    check::positive(e, "surface.laplacian_limit", def.laplacian_limit);
+    Invalid e = validate(def);
     const double cell = def.cell;
     const double unit_height = unit_kg / (fresh_snow_density * cell * cell);
     if (e.empty() && !(std::isfinite(unit_height) && unit_height > 0.0)) {
@@ -53,8 +43,8 @@ SnowSurface make_surface(const SurfaceDef& def) {
         const double reach = std::abs(static_cast<double>(def.base_y)) +
                              std::abs(static_cast<double>(def.slope_x)) * nx * cell +
                              std::abs(static_cast<double>(def.slope_z)) * nz * cell;
-        check::at_most(e, "surface.base_y and slopes (in snow units of this cell size)",
-                       reach / unit_height, max_surface_level);
+        check::number(e, "surface.base_y and slopes (in snow units of this cell size)",
+                      up_to(max_surface_level), reach / unit_height);
     }
     throw_if(e);
 

@@ -11,8 +11,8 @@
 // are open (pressure 0, velocity extrapolated). Faces touching a solid cell
 // hold zero velocity, so air inside and along obstacles is still: the
 // semi-Lagrangian trace reads that stillness into the cells behind them.
-#include "systems/limits.hpp"
-#include "systems/validation.hpp"
+#include "systems/wind_field.hpp"
+
 #include "systems/wind_field_solver.hpp"
 
 #include <cmath>
@@ -411,41 +411,6 @@ Lattice Lattice::make(const std::uint32_t (&n)[3], int face_axis) {
         l.last[a] = on_faces ? cells - 1 : cells;
     }
     return l;
-}
-
-Invalid validate(const WindFieldDef& d) {
-    Invalid e;
-    const std::uint64_t cells = std::uint64_t{d.cells_x} * d.cells_y * d.cells_z;
-    if (cells == 0) {
-        check::fail(e, "wind.field.cells", "at least 1 on every axis", 0);
-    }
-    if (cells > max_wind_field_cells) {
-        check::fail(e, "wind.field.cells (total)", "<= 2^24", static_cast<double>(cells));
-    }
-    if (d.update_every == 0) {
-        check::fail(e, "wind.field.update_every", ">= 1", 0);
-    }
-    check::at_most(e, "wind.field.update_every", d.update_every, 1 << 16);
-    if (d.pressure_iterations == 0) {
-        check::fail(e, "wind.field.pressure_iterations", ">= 1", 0);
-    }
-    check::at_most(e, "wind.field.pressure_iterations", d.pressure_iterations, 4096);
-    check::non_negative(e, "wind.field.eddy_viscosity", d.eddy_viscosity);
-    check::at_most(e, "wind.field.eddy_viscosity", d.eddy_viscosity, 10.0);
-    return e;
-}
-
-Invalid validate(const WindTransportDef& t) {
-    Invalid e;
-    check::positive(e, "wind.field.transport.threshold", t.threshold);
-    check::at_most(e, "wind.field.transport.threshold", t.threshold, max_wind_base_component);
-    check::non_negative(e, "wind.field.transport.rate", t.rate);
-    check::at_most(e, "wind.field.transport.rate", t.rate, max_transport_rate);
-    check::positive(e, "wind.field.transport.max_fraction", t.max_fraction);
-    check::at_most(e, "wind.field.transport.max_fraction", t.max_fraction, 1.0);
-    check::non_negative(e, "wind.field.transport.height", t.height);
-    check::at_most(e, "wind.field.transport.height", t.height, max_transport_height);
-    return e;
 }
 
 WindField make_wind_field(const WindFieldDef& def, const Aabb& bounds) {

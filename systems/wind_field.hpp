@@ -28,9 +28,6 @@ struct WindFieldDef {
     float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
 };
 
-/// Largest cells_x·cells_y·cells_z a field may have.
-inline constexpr std::uint64_t max_wind_field_cells = 1ull << 24;
-
 /// One array of the staggered grid and how to read it. Storage is x fastest;
 /// an axis the samples sit at cell centres of has one ghost layer on each
 /// side (dim = n + 2, shift 0.5), an axis they sit on the faces of has none

@@ -6,7 +6,6 @@
 
 #include "ecs/error.hpp"
 
-#include <sstream>
 #include <string>
 
 namespace snow {
@@ -15,13 +14,6 @@ class SceneError : public Error {
   public:
     using Error::Error;
 };
-
-/// A number as error messages print it (6 significant digits, like check::fail).
-[[nodiscard]] inline std::string number_text(double v) {
-    std::ostringstream os;
-    os << v;
-    return os.str();
-}
 
 /// `"text"` with the quotes, for error messages. (Built by appending: GCC 12
 /// warns falsely, -Wrestrict, on `"\"" + std::string&&`.)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace snow {
 
@@ -181,6 +182,11 @@ void read_value(const Json& j, const std::string& field, const Range& range,
 void read_value(const Json& j, const std::string& field, const Range& range,
                 std::vector<std::string>& out) {
     read_elements(j, field, range, out);
+}
+
+bool fills(std::string_view row, std::string_view plain) {
+    return plain.starts_with(row) &&
+           (plain.size() == row.size() || plain[row.size()] == '.' || plain[row.size()] == '[');
 }
 
 void require_object(const Json& j, const std::string& path) {

@@ -1,18 +1,21 @@
 /// @file scene_fields.hpp
 /// @brief Table-driven reading of JSON objects into structs (internal to
 /// snow::scene). Each struct has one table: for every field its JSON name, the
-/// member it fills, its allowed range and whether it is required. read_struct()
+/// member it fills, its allowed range and whether it is required. A settings
+/// struct of the simulation is read by its own table from settings_fields.hpp
+/// (a Schema), plus rows for what needs a reader of its own. read_struct()
 /// checks the JSON type, the range and (for `extras.snow`) unknown keys, and
 /// every error names the full path of the field.
 #pragma once
 
 #include "game/scene/scene_error.hpp"
+#include "systems/field_rules.hpp"
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <ranges>
 #include <span>
@@ -29,15 +32,6 @@ using Json = nlohmann::json;
 /// The JSON type of a value as a word for error messages ("array", "string", ...).
 [[nodiscard]] std::string json_type_name(const Json& j);
 
-/// Allowed values of a number (of each component of a vector or list).
-struct Range {
-    double min = -std::numeric_limits<double>::infinity();
-    double max = std::numeric_limits<double>::infinity();
-    bool min_exclusive = false; ///< true: > min; false: >= min
-};
-inline constexpr Range above_zero{0.0, std::numeric_limits<double>::infinity(), true};
-inline constexpr Range at_least_zero{0.0};
-
 /// A field that needs more than a value check (a choice of names, a nested
 /// object or list): reads `value` into the struct; `field` names it in errors.
 template <typename T>
@@ -51,7 +45,8 @@ using Member =
                  std::optional<std::string> T::*, glm::vec3 T::*, std::vector<double> T::*,
                  std::vector<std::uint64_t> T::*, std::vector<std::string> T::*, FieldReader<T>>;
 
-/// One row of a struct's table.
+/// One row of a struct's table. `range` (systems' Range) bounds a number, or
+/// each component of a vector or list.
 template <typename T>
 struct Field {
     using Struct = T;
@@ -59,6 +54,19 @@ struct Field {
     Member<T> member;
     Range range = {};
     bool required = false;
+};
+
+/// How a settings struct of the simulation is read: the fields of its systems
+/// table (`plain`) by their member's type, and `rows`, each of which fills the
+/// plain fields it names (its name, or its name then '.' or '[': a corner
+/// "min" fills "min.x" and "min.z") with a reader of its own. Plain fields
+/// named in `unread` are not in scenes. Types and JSON shapes are checked
+/// here; the ranges of the plain fields are the struct's validate()'s.
+template <typename T>
+struct Schema {
+    std::span<const FieldRule<T>> plain;
+    std::span<const Field<T>> rows = {};
+    std::span<const std::string_view> unread = {};
 };
 
 /// What to do with keys no row names: `extras.snow` rejects them (a typo never
@@ -93,41 +101,73 @@ void require_object(const Json& j, const std::string& path);
 void reject_unknown_keys(const Json& j, const std::string& path,
                          std::span<const std::string_view> names);
 
-/// The struct a table (an array of Field<T>) fills.
+/// The struct a table (an array of Field<T>, or a Schema<T>) fills.
 template <typename Table>
-using TableStruct = typename std::ranges::range_value_t<Table>::Struct;
+struct table_struct {
+    using type = typename std::ranges::range_value_t<Table>::Struct;
+};
+template <typename T>
+struct table_struct<Schema<T>> {
+    using type = T;
+};
+template <typename Table>
+using TableStruct = typename table_struct<Table>::type;
 
-/// Fills `out` from the object `j` by the table: rows in table order, absent
-/// optional fields keep `out`'s value.
-template <typename Table>
-void read_fields(const Json& j, const std::string& path, const Table& fields, UnknownKeys unknown,
-                 TableStruct<Table>& out) {
+/// Whether the row `row` fills the plain field `plain` (see Schema).
+[[nodiscard]] bool fills(std::string_view row, std::string_view plain);
+
+/// Fills `out` from the object `j` by the schema: rows, then plain fields in
+/// table order; absent optional fields keep `out`'s value.
+template <typename T>
+void read_fields(const Json& j, const std::string& path, const Schema<T>& schema,
+                 UnknownKeys unknown, T& out) {
     require_object(j, path);
     std::vector<std::string_view> names;
-    for (const auto& f : fields) {
+    const auto field_of = [&](std::string_view name) {
+        return path.empty() ? std::string(name) : path + "." + std::string(name);
+    };
+    for (const Field<T>& f : schema.rows) {
         names.push_back(f.name);
         const auto it = j.find(f.name);
-        const std::string field =
-            path.empty() ? std::string(f.name) : path + "." + std::string(f.name);
         if (it == j.end()) {
             if (f.required) {
-                scene_fail(field, "is required");
+                scene_fail(field_of(f.name), "is required");
             }
             continue;
         }
         std::visit(
             [&](auto member) {
                 if constexpr (std::is_pointer_v<decltype(member)>) {
-                    member(*it, field, out);
+                    member(*it, field_of(f.name), out);
                 } else {
-                    read_value(*it, field, f.range, out.*member);
+                    read_value(*it, field_of(f.name), f.range, out.*member);
                 }
             },
             f.member);
     }
+    for (const FieldRule<T>& f : schema.plain) {
+        const auto has_row = [&](const Field<T>& row) { return fills(row.name, f.name); };
+        if (std::ranges::any_of(schema.rows, has_row) ||
+            std::ranges::find(schema.unread, f.name) != schema.unread.end()) {
+            continue;
+        }
+        names.push_back(f.name);
+        if (const auto it = j.find(f.name); it != j.end()) {
+            std::visit([&](auto member) { read_value(*it, field_of(f.name), {}, out.*member); },
+                       f.member);
+        }
+    }
     if (unknown == UnknownKeys::reject) {
         reject_unknown_keys(j, path, names);
     }
+}
+
+/// Fills `out` from the object `j` by the table: rows in table order, absent
+/// optional fields keep `out`'s value.
+template <typename T, std::size_t N>
+void read_fields(const Json& j, const std::string& path, const Field<T> (&fields)[N],
+                 UnknownKeys unknown, T& out) {
+    read_fields(j, path, Schema<T>{{}, fields}, unknown, out);
 }
 
 /// A struct read from the object `j`, starting from its defaults.

@@ -1,10 +1,13 @@
-// The `extras.snow` schema, one table per struct: JSON → SurfaceDef,
-// SimConfig, Emitter, Wind, WindFieldDef, Fog, OcclusionCamera, SpectralSnow, camera,
-// environment and lights. The tables check types and the ranges that only the
-// scene knows (camera, colours); the simulation's validate() functions check
-// the rest, and their messages are prefixed with the JSON path.
+// The `extras.snow` schema: JSON → SurfaceDef, SimConfig, Emitter, Wind,
+// WindFieldDef, Fog, OcclusionCamera, SpectralSnow, CoverDef and BodyMotion,
+// each read by its systems table (settings_fields.hpp) plus rows for choices,
+// nested objects, corners, cells and waypoints; camera, environment and
+// lights by tables of their own. The reader checks types and the ranges that
+// only the scene knows (camera, colours); the simulation's validate()
+// functions check the rest, and their messages are prefixed with the JSON path.
 #include "game/scene/scene_schema.hpp"
 
+#include "systems/settings_fields.hpp"
 #include "systems/validation.hpp"
 
 #include <cmath>
@@ -25,14 +28,9 @@ void check_valid(const Invalid& v, const std::string& prefix) {
 
 // --- nodes[i].extras.snow ----------------------------------------------------
 
-constexpr Field<SurfaceDef> surface_fields[] = {
-    {"cell", &SurfaceDef::cell},
-    {"edge_limit", &SurfaceDef::edge_limit},
-    {"laplacian_limit", &SurfaceDef::laplacian_limit},
-    {"slope_x", &SurfaceDef::slope_x},
-    {"slope_z", &SurfaceDef::slope_z},
-    {"spills", &SurfaceDef::spills},
-};
+/// A surface's rectangle and height come from its node's mesh.
+constexpr std::string_view surface_from_mesh[] = {"x0", "z0", "size_x", "size_z", "base_y"};
+constexpr Schema<SurfaceDef> surface_schema{surface_fields, {}, surface_from_mesh};
 
 constexpr std::pair<std::string_view, ColliderKind> collider_kinds[] = {
     {"box", ColliderKind::box},
@@ -53,17 +51,14 @@ void read_waypoints(const Json& j, const std::string& field, BodyMotion& m) {
     }
 }
 
-constexpr Field<BodyMotion> motion_fields[] = {
-    {"waypoints", &read_waypoints, {}, true},
-    {"speed", &BodyMotion::speed, at_least_zero},
-    {"loop", &BodyMotion::loop},
-};
+constexpr Field<BodyMotion> motion_rows[] = {{"waypoints", &read_waypoints, {}, true}};
+constexpr Schema<BodyMotion> motion_schema{motion_fields, motion_rows};
 
 constexpr Field<NodeSnow> node_snow_fields[] = {
-    {"surface", &read_nested<&NodeSnow::surface, surface_fields, reject>},
+    {"surface", &read_nested<&NodeSnow::surface, surface_schema, reject>},
     {"collider", +[](const Json& j, const std::string& field,
                      NodeSnow& n) { n.collider = read_choice(j, field, collider_kinds); }},
-    {"motion", &read_nested<&NodeSnow::motion, motion_fields, reject>},
+    {"motion", &read_nested<&NodeSnow::motion, motion_schema, reject>},
     {"snowball", &NodeSnow::snowball},
     {"on_ground", &NodeSnow::on_ground},
 };
@@ -75,12 +70,7 @@ constexpr Field<Aabb> bounds_fields[] = {
     {"max", &Aabb::max, {}, true},
 };
 
-constexpr Field<SimConfig> simulation_fields[] = {
-    {"dt", &SimConfig::dt},
-    {"seed", &SimConfig::seed},
-    {"max_flakes", &SimConfig::max_flakes, {1.0, 16u << 20}},
-    {"threads", &SimConfig::threads, {1.0, 256.0}},
-    {"gravity", &SimConfig::gravity},
+constexpr Field<SimConfig> simulation_rows[] = {
     {"integrator",
      +[](const Json& j, const std::string& field, SimConfig& c) {
          const auto i = j.is_string() ? parse_integrator(j.get<std::string>()) : std::nullopt;
@@ -94,56 +84,42 @@ constexpr Field<SimConfig> simulation_fields[] = {
      }},
     {"bounds", &read_nested<&SimConfig::bounds, bounds_fields, reject>},
 };
+/// Smoothing sub-iterations are not part of the scene schema (docs/scenes.md).
+constexpr std::string_view simulation_unread[] = {"smoothing_iterations"};
+constexpr Schema<SimConfig> simulation_schema{sim_config_fields, simulation_rows,
+                                              simulation_unread};
 
-constexpr Field<Emitter> emitter_fields[] = {
-    {"rate", &Emitter::rate},
-    {"mass_min_g", &Emitter::mass_min_g},
-    {"mass_max_g", &Emitter::mass_max_g},
-    {"size_min", &Emitter::size_min},
-    {"size_max", &Emitter::size_max},
-    {"fall_speed_min", &Emitter::fall_speed_min},
-    {"fall_speed_max", &Emitter::fall_speed_max},
-};
+constexpr Schema<Emitter> emitter_schema{emitter_fields};
 
-constexpr Field<Wind> wind_fields[] = {
+constexpr Field<Wind> wind_rows[] = {
     {"base",
      +[](const Json& j, const std::string& field, Wind& w) {
          read_value(j, field, {}, w.base);
          w.current = w.base; // the wind starts at its mean
      }},
-    {"walk", &Wind::walk},
-    {"max_deviation", &Wind::max_deviation},
-    {"gust_strength", &Wind::gust_strength},
-    {"gust_rate", &Wind::gust_rate},
-    {"gust_duration", &Wind::gust_duration},
 };
+/// The wind's running state starts from its mean.
+constexpr std::string_view wind_state[] = {"current", "deviation", "gust_left"};
+constexpr Schema<Wind> wind_schema{wind_fields, wind_rows, wind_state};
 
-/// `wind.field.cells`: [x, y, z], each at least 1.
+/// `wind.field.cells`: [x, y, z] cell counts.
 void read_field_cells(const Json& j, const std::string& field, WindFieldDef& d) {
-    std::vector<std::uint64_t> n;
-    read_value(j, field, {1.0, static_cast<double>(max_wind_field_cells)}, n);
-    if (n.size() != 3) {
-        scene_fail(field, "must be an array of 3 cell counts [x, y, z] (got " +
-                              std::to_string(n.size()) + " values)");
+    if (!j.is_array() || j.size() != 3) {
+        scene_fail(field,
+                   "must be an array of 3 cell counts [x, y, z] (got " +
+                       (j.is_array() ? std::to_string(j.size()) + " values" : json_type_name(j)) +
+                       ")");
     }
-    d.cells_x = static_cast<std::uint32_t>(n[0]);
-    d.cells_y = static_cast<std::uint32_t>(n[1]);
-    d.cells_z = static_cast<std::uint32_t>(n[2]);
+    std::uint32_t* const cells[] = {&d.cells_x, &d.cells_y, &d.cells_z};
+    for (std::size_t i = 0; i < 3; ++i) {
+        read_value(j[i], field + "[" + std::to_string(i) + "]", {}, *cells[i]);
+    }
 }
 
-constexpr Field<WindFieldDef> wind_field_fields[] = {
-    {"cells", &read_field_cells},
-    {"update_every", &WindFieldDef::update_every},
-    {"pressure_iterations", &WindFieldDef::pressure_iterations},
-    {"eddy_viscosity", &WindFieldDef::eddy_viscosity},
-};
+constexpr Field<WindFieldDef> wind_field_rows[] = {{"cells", &read_field_cells}};
+constexpr Schema<WindFieldDef> wind_field_schema{wind_field_fields, wind_field_rows};
 
-constexpr Field<WindTransportDef> wind_transport_fields[] = {
-    {"threshold", &WindTransportDef::threshold},
-    {"rate", &WindTransportDef::rate},
-    {"max_fraction", &WindTransportDef::max_fraction},
-    {"height", &WindTransportDef::height},
-};
+constexpr Schema<WindTransportDef> wind_transport_schema{wind_transport_fields};
 
 /// `j` without its member `key`, which `read` takes first when present.
 template <typename Read>
@@ -163,48 +139,29 @@ void read_wind(const Json& j, const std::string& field, SceneSnow& s) {
     const Json global = split_member(j, field, "field", [&](const Json& f, const std::string& fp) {
         const Json grid =
             split_member(f, fp, "transport", [&](const Json& t, const std::string& tp) {
-                s.wind_transport = read_struct(t, tp, wind_transport_fields, reject);
+                s.wind_transport = read_struct(t, tp, wind_transport_schema, reject);
             });
-        s.wind_field = read_struct(grid, fp, wind_field_fields, reject);
+        s.wind_field = read_struct(grid, fp, wind_field_schema, reject);
     });
-    s.wind = read_struct(global, field, wind_fields, reject);
+    s.wind = read_struct(global, field, wind_schema, reject);
 }
 
 constexpr std::pair<std::string_view, FogMode> fog_modes[] = {{"exponential", FogMode::exponential},
                                                               {"half_life", FogMode::half_life},
                                                               {"layered", FogMode::layered}};
 
-constexpr Field<FogPuff> puff_fields[] = {
-    {"center", &FogPuff::center},       {"sigma", &FogPuff::sigma}, {"density", &FogPuff::density},
-    {"frequency", &FogPuff::frequency}, {"phase", &FogPuff::phase},
-};
+constexpr Schema<FogPuff> puff_schema{fog_puff_fields};
 
-constexpr Field<Fog> fog_fields[] = {
+constexpr Field<Fog> fog_rows[] = {
     {"mode", +[](const Json& j, const std::string& field,
                  Fog& f) { f.mode = read_choice(j, field, fog_modes); }},
-    {"color", &Fog::color},
-    {"density", &Fog::density},
-    {"half_distance", &Fog::half_distance},
-    {"layer_bottom", &Fog::layer_bottom},
-    {"layer_top", &Fog::layer_top},
-    {"layer_density", &Fog::layer_density},
-    {"puffs", &read_nested<&Fog::puffs, puff_fields, reject>},
+    {"puffs", &read_nested<&Fog::puffs, puff_schema, reject>},
 };
+constexpr Schema<Fog> fog_schema{fog_fields, fog_rows};
 
-constexpr Field<OcclusionCamera> occlusion_fields[] = {
-    {"resolution", &OcclusionCamera::resolution, {1.0, 4096.0}},
-    {"tilt", &OcclusionCamera::tilt},
-};
+constexpr Schema<OcclusionCamera> occlusion_schema{occlusion_fields};
 
-constexpr Field<SpectralSnow> spectral_fields[] = {
-    {"size_xy", &SpectralSnow::size_xy, {1.0, 1u << 16}},
-    {"size_t", &SpectralSnow::size_t, {1.0, 1u << 16}},
-    {"speed", &SpectralSnow::speed},
-    {"band_low", &SpectralSnow::band_low},
-    {"band_high", &SpectralSnow::band_high},
-    {"opacity", &SpectralSnow::opacity},
-    {"start_distance", &SpectralSnow::start_distance},
-};
+constexpr Schema<SpectralSnow> spectral_schema{spectral_fields};
 
 /// `[x, z]` of a cover corner.
 template <float CoverDef::*X, float CoverDef::*Z>
@@ -218,41 +175,37 @@ void read_corner(const Json& j, const std::string& field, CoverDef& c) {
     c.*Z = static_cast<float>(xz[1]);
 }
 
-constexpr Field<CoverDef> cover_fields[] = {
+constexpr Field<CoverDef> cover_rows[] = {
     {"min", &read_corner<&CoverDef::min_x, &CoverDef::min_z>, {}, true},
     {"max", &read_corner<&CoverDef::max_x, &CoverDef::max_z>, {}, true},
-    {"cell", &CoverDef::cell},
-    {"edge_limit", &CoverDef::edge_limit},
-    {"drop_limit", &CoverDef::drop_limit},
-    {"laplacian_limit", &CoverDef::laplacian_limit},
-    {"repose_deg", &CoverDef::repose_deg},
 };
+constexpr Schema<CoverDef> cover_schema{cover_fields, cover_rows};
 
 constexpr Field<CameraDef> camera_fields[] = {
     {"position", &CameraDef::position},
     {"target", &CameraDef::target},
     {"fov_y_deg", &CameraDef::fov_y_deg, {0.0, 170.0, true}},
-    {"near_plane", &CameraDef::near_plane, above_zero},
-    {"far_plane", &CameraDef::far_plane, above_zero},
+    {"near_plane", &CameraDef::near_plane, positive},
+    {"far_plane", &CameraDef::far_plane, positive},
 };
 
 constexpr Field<Environment> environment_fields[] = {
-    {"ambient", &Environment::ambient, at_least_zero},
-    {"sky", &Environment::sky, at_least_zero},
+    {"ambient", &Environment::ambient, non_negative},
+    {"sky", &Environment::sky, non_negative},
 };
 
 constexpr Field<SceneSnow> scene_snow_fields[] = {
     {"simulation",
      +[](const Json& j, const std::string& field, SceneSnow& s) {
-         read_fields(j, field, simulation_fields, reject, s.config);
+         read_fields(j, field, simulation_schema, reject, s.config);
          s.has_bounds = j.contains("bounds");
      }},
-    {"emitter", &read_nested<&SceneSnow::emitter, emitter_fields, reject>},
+    {"emitter", &read_nested<&SceneSnow::emitter, emitter_schema, reject>},
     {"wind", &read_wind},
-    {"fog", &read_nested<&SceneSnow::fog, fog_fields, reject>},
-    {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_fields, reject>},
-    {"spectral", &read_nested<&SceneSnow::spectral, spectral_fields, reject>},
-    {"cover", &read_nested<&SceneSnow::cover, cover_fields, reject>},
+    {"fog", &read_nested<&SceneSnow::fog, fog_schema, reject>},
+    {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_schema, reject>},
+    {"spectral", &read_nested<&SceneSnow::spectral, spectral_schema, reject>},
+    {"cover", &read_nested<&SceneSnow::cover, cover_schema, reject>},
     {"camera",
      +[](const Json& j, const std::string& field, SceneSnow& s) {
          const CameraDef& c = s.camera.emplace(read_struct(j, field, camera_fields, reject));
@@ -297,6 +250,9 @@ SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     if (s.fog) {
         check_valid(validate(*s.fog), path);
     }
+    if (s.occlusion) {
+        check_valid(validate(*s.occlusion), path);
+    }
     if (s.spectral) {
         check_valid(validate(*s.spectral), path);
     }
@@ -317,8 +273,8 @@ constexpr Field<LightSpec> light_fields[] = {
      },
      {},
      true},
-    {"color", &LightSpec::color, at_least_zero},
-    {"intensity", &LightSpec::intensity, at_least_zero},
+    {"color", &LightSpec::color, non_negative},
+    {"intensity", &LightSpec::intensity, non_negative},
 };
 
 /// A node's or the file's `extensions.KHR_lights_punctual`, or null.

@@ -55,7 +55,7 @@ TEST(WindFieldScene, BadFieldsGiveOneErrorNamingTheField) {
     };
     rejects("\"cells\": [0, 16, 64]", {"wind.field.cells[0]"});
     rejects("\"cells\": [64, 16]", {"wind.field.cells", "3 cell counts"});
-    rejects("\"cells\": [512, 512, 512]", {"wind.field.cells (total)", "2^24"});
+    rejects("\"cells\": [512, 512, 512]", {"wind.field.cells (total)", "16777216"});
     rejects("\"update_every\": 0", {"wind.field.update_every"});
     rejects("\"eddy_viscosity\": -1", {"wind.field.eddy_viscosity"});
     rejects("\"eddy_viscosity\": \"fast\"", {"wind.field.eddy_viscosity"});
