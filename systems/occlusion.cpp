@@ -20,7 +20,6 @@ namespace snow {
 
 namespace {
 
-constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 
 /// Where and how the map is laid out; a change from the stored one means a refresh.
 struct Layout {
