@@ -75,7 +75,7 @@ def per_flake(family):
         for t in (1, 2):
             b = med.get(f"{family}/flakes:{n}/threads:{t}/real_time")
             if b:
-                cell[t] = (ms(b), b["ns_per_flake"] * 1e9, b["flakes"])
+                cell[t] = (ms(b), b["ns_per_flake"], b["flakes"])
         if cell:
             fl = next(iter(cell.values()))[2]
             rows.append([f"{n:,}", f"{fl:,.0f}"] + [
@@ -105,7 +105,7 @@ rows = [[n.split("/", 1)[1], f"{ms(b):.2f} ms"]
 table("BM_OcclusionRefresh (one full rebuild of the sky map)", ["case", "time"], rows)
 rows = [[n.split("/", 1)[0], n.split("/", 1)[1], f"{ms(b):.3f} ms",
          f"{b['flake_pass_ms']:.2f} ms" if "flake_pass_ms" in b else
-         f"{b['ns_per_flake'] * 1e9:.2f} ns/flake"]
+         f"{b['ns_per_flake']:.2f} ns/flake"]
         for n, b in med.items() if n.startswith(("BM_FlakeSelection/", "BM_RenderUpload/"))]
 table("Render upload (OSMesa llvmpipe, 320×240)", ["benchmark", "case", "time", "detail"], rows)
 rows = [[n.split("/", 1)[1], f"{b['bytes_per_second'] / 1e9:.1f} GB/s"]
