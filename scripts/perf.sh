@@ -253,7 +253,7 @@ if doc != "none":
 EOF
 
 gnuplot <<EOF
-set terminal pngcairo size 800,520 font ",11"
+set terminal pngcairo size 800,520 font ",11" noenhanced
 set output "docs/img/perf_scaling.png"
 set title "snow: full simulation tick (BM_SimTick, snowfall yard, 512² ground)" noenhanced
 set xlabel "flakes alive"
