@@ -20,7 +20,9 @@ constexpr const char* smoke_filter = "--benchmark_filter="
                                      "|/resolution:256(/|$)"
                                      "|/mib:64/.*threads:1$"
                                      "|/cells:256/view:0/changed:0(/|$)"
-                                     "|/bodies:1$";
+                                     "|/bodies:1$"
+                                     "|^BM_SpeedOfLight/flakes:100000/threads:1/"
+                                     "|^BM_VillageTick/threads:1/";
 
 } // namespace
 

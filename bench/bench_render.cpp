@@ -41,14 +41,13 @@ void flake_selection(benchmark::State& state) {
     sel.eye = cam.position;
     std::vector<float> staging(static_cast<std::size_t>(pool.capacity()) * 4);
     std::uint64_t drawn = 0;
+    FlakeClock clock;
     for (auto _ : state) {
-        drawn += select_flakes(pool, sel, staging);
+        clock.time(pool.alive, [&] { drawn += select_flakes(pool, sel, staging); });
         benchmark::DoNotOptimize(staging.data());
     }
+    clock.report(state);
     state.counters["drawn"] = static_cast<double>(drawn) / static_cast<double>(state.iterations());
-    state.counters["ns_per_flake"] =
-        benchmark::Counter(static_cast<double>(state.iterations()) * pool.alive,
-                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void render_frame(benchmark::State& state) {

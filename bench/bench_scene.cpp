@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
+#include <utility>
 
 namespace snow::bench {
 
@@ -69,24 +71,37 @@ BenchWorld::BenchWorld(std::uint32_t flakes, unsigned threads, Load load) {
     start = sim->save();
 }
 
-void BenchWorld::step_done(benchmark::State& state, std::uint64_t& iteration,
-                           std::uint32_t alive_before) {
-    flake_ticks += alive_before;
-    if (++iteration % restore_every == 0) {
-        state.PauseTiming();
-        sim->restore(*start);
-        state.ResumeTiming();
-    }
+BenchWorld::BenchWorld(std::unique_ptr<Simulation> ready) : sim(std::move(ready)) {
+    start = sim->save();
 }
 
-void report_per_flake(benchmark::State& state, const BenchWorld& world) {
-    const auto ticks = static_cast<double>(state.iterations());
-    state.counters["flakes"] = ticks > 0 ? static_cast<double>(world.flake_ticks) / ticks : 0.0;
-    // A rate, inverted: seconds per flake-tick (the console prints it in ns;
-    // --benchmark_format=json holds the value in seconds).
-    state.counters["ns_per_flake"] =
-        benchmark::Counter(static_cast<double>(world.flake_ticks),
-                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+void BenchWorld::restore(benchmark::State& state) {
+    state.PauseTiming();
+    sim->restore(*start);
+    state.ResumeTiming();
+}
+
+double FlakeClock::process_cpu_ns() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1.0e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
+}
+
+void FlakeClock::report(benchmark::State& state) const {
+    const bool any = flake_ticks_ > 0.0;
+    state.counters["flakes"] = calls_ > 0 ? flake_ticks_ / static_cast<double>(calls_) : 0.0;
+    state.counters["ns_per_flake"] = any ? ns_ / flake_ticks_ : 0.0;
+    state.counters["cpu_ns_per_flake"] = any ? cpu_ns_ / flake_ticks_ : 0.0;
+}
+
+void flake_args(benchmark::internal::Benchmark* b, std::initializer_list<int> sizes) {
+    b->ArgNames({"flakes", "threads"});
+    for (const int n : sizes) {
+        for (const int t : {1, 2}) {
+            b->Args({n, t});
+        }
+    }
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
 } // namespace snow::bench

@@ -11,13 +11,10 @@ template <Load load>
 void full_tick(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)), static_cast<unsigned>(state.range(1)),
                   load);
-    std::uint64_t i = 0;
     for (auto _ : state) {
-        const std::uint32_t alive = bw.sim->flakes().alive;
-        bw.sim->tick();
-        bw.step_done(state, i, alive);
+        bw.step(state, [&] { bw.sim->tick(); });
     }
-    report_per_flake(state, bw);
+    bw.clock.report(state);
 }
 
 /// One system alone on the snowfall world (the others not run).
@@ -25,23 +22,10 @@ template <void (*system)(World&)>
 void one_system(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
                   static_cast<unsigned>(state.range(1)));
-    std::uint64_t i = 0;
     for (auto _ : state) {
-        const std::uint32_t alive = bw.sim->flakes().alive;
-        system(InternalAccess::world(*bw.sim));
-        bw.step_done(state, i, alive);
+        bw.step(state, [&] { system(InternalAccess::world(*bw.sim)); });
     }
-    report_per_flake(state, bw);
-}
-
-void flake_args(benchmark::internal::Benchmark* b, std::initializer_list<int> sizes) {
-    b->ArgNames({"flakes", "threads"});
-    for (const int n : sizes) {
-        for (const int t : {1, 2}) {
-            b->Args({n, t});
-        }
-    }
-    b->Unit(benchmark::kMillisecond)->UseRealTime();
+    bw.clock.report(state);
 }
 
 /// The sizes of the issue; the full tick also gets points between them for the scaling plot.

@@ -39,13 +39,10 @@ void integrate_in_field(benchmark::State& state) {
     bw.sim->set_wind_field(field_of_side(64));
     wind_field_system(InternalAccess::world(*bw.sim)); // the first step fills the field
     bw.start = bw.sim->save();
-    std::uint64_t i = 0;
     for (auto _ : state) {
-        const std::uint32_t alive = bw.sim->flakes().alive;
-        integrate_system(InternalAccess::world(*bw.sim));
-        bw.step_done(state, i, alive);
+        bw.step(state, [&] { integrate_system(InternalAccess::world(*bw.sim)); });
     }
-    report_per_flake(state, bw);
+    bw.clock.report(state);
 }
 
 } // namespace

@@ -23,7 +23,8 @@ struct FlakeSelection {
 };
 
 /// Writes (x, y, z, drawn diameter) of each alive flake inside the view frustum
-/// into `out` (4 floats each, out.size() ≥ 4 × pool capacity), slot order.
+/// into `out` (4 floats each, out.size() ≥ 4 × pool capacity), slot order;
+/// what follows the returned count is scratch.
 /// With lod, a flake at distance d > lod_distance is kept only when its slot's
 /// fixed hash falls under (lod_distance / d)², so thinning never flickers.
 /// Returns the number written. Exposed for tests and benchmarks.

@@ -9,19 +9,30 @@
 
 namespace snow {
 
-/// World resource wrapping the pool owned by the Simulation (may be null: serial).
-struct Jobs {
-    JobPool* pool = nullptr;
-};
-
 /// Flakes per chunk: fixed, so chunk bounds never depend on thread count.
 inline constexpr std::size_t flake_grain = 16384;
 
+/// Items (flake slots) below which for_chunks keeps the work on the calling
+/// thread. A flake pass costs 1–3 ns per slot; handing chunks to a second
+/// core costs tens of µs (waking its thread, moving the chunks' cache lines
+/// to it), so below about this size two threads were slower than one
+/// (BM_SimTickAloft at 100k slots, BM_VillageTick; docs/performance.md).
+inline constexpr std::size_t parallel_min_items = 16 * flake_grain;
+
+/// World resource wrapping the pool owned by the Simulation (may be null: serial).
+struct Jobs {
+    JobPool* pool = nullptr;
+    /// for_chunks hands work to the pool from this many items on; tests of
+    /// small scenes set 0 so their second thread takes chunks too.
+    std::size_t min_items = parallel_min_items;
+};
+
 /// Runs fn(chunk, begin, end) over [0, n) in chunks of `grain`, on the world's
-/// pool if it has one, else serially; the chunks are the same either way.
+/// pool if it has one and n is at least its min_items, else serially;
+/// the chunks are the same either way, so are the results.
 inline void for_chunks(World& w, std::size_t n, std::size_t grain, const JobPool::ChunkFn& fn) {
     const Jobs* jobs = w.try_resource<Jobs>();
-    if (jobs != nullptr && jobs->pool != nullptr) {
+    if (jobs != nullptr && jobs->pool != nullptr && n >= jobs->min_items) {
         jobs->pool->parallel_for(n, grain, fn);
         return;
     }

@@ -2,6 +2,7 @@
 // by exactly what it takes; swept trenches at speed; flakes pushed aside;
 // determinism and restore with bodies; bad input rejected.
 #include "systems/simulation.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -172,6 +173,7 @@ TEST(Body, FlakesDoNotEndInsideAMovingBody) {
 
 TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
     SnowyGround a(1), b(2);
+    test::share_work_at_any_size(b.sim);
     for (SnowyGround* g : {&a, &b}) {
         Emitter e;
         e.rate = 3000.0f;

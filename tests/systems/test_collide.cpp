@@ -3,6 +3,7 @@
 #include "systems/collider_grid.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/random_streams.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -310,6 +311,7 @@ TEST(Collide, OneAndTwoThreadsLeaveIdenticalPoolState) {
     constexpr std::uint32_t n = 100000;
     Simulation one(config(n, 1));
     Simulation two(config(n, 2));
+    test::share_work_at_any_size(two);
     fill_scene(one, n);
     fill_scene(two, n);
     const FlakePool before = one.flakes();

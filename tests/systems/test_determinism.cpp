@@ -2,6 +2,7 @@
 // same scene and seed give the same state hash run after run, and 1 and 2
 // threads agree on every tick.
 #include "systems/sample_scenes.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +18,16 @@ YardOptions busy_yard(unsigned threads) {
     return o;
 }
 
+/// The busy yard, its chunks shared by the threads although it is small.
+std::unique_ptr<Simulation> busy(unsigned threads) {
+    auto sim = make_yard(busy_yard(threads));
+    test::share_work_at_any_size(*sim);
+    return sim;
+}
+
 TEST(Determinism, SameSeedSameHash) {
-    auto a = make_yard(busy_yard(1));
-    auto b = make_yard(busy_yard(1));
+    auto a = busy(1);
+    auto b = busy(1);
     a->run(300);
     b->run(300);
     EXPECT_EQ(a->state_hash(), b->state_hash());
@@ -33,8 +41,8 @@ TEST(Determinism, SameSeedSameHash) {
 }
 
 TEST(Determinism, OneAndTwoThreadsAgreeEveryTick) {
-    auto one = make_yard(busy_yard(1));
-    auto two = make_yard(busy_yard(2));
+    auto one = busy(1);
+    auto two = busy(2);
     for (int t = 0; t < 400; ++t) {
         one->tick();
         two->tick();
@@ -54,15 +62,20 @@ TEST(Determinism, PinnedHashHoldsInEveryBuild) {
     // give the previous pin, 0x59e1aad00886ba81.)
     constexpr std::uint64_t pinned = 0x7d59cde8554e8259ull;
     for (const unsigned threads : {1u, 2u}) {
-        auto sim = make_yard(busy_yard(threads));
+        auto sim = busy(threads);
         sim->run(300);
         EXPECT_EQ(sim->state_hash(), pinned)
             << threads << " thread(s): got 0x" << std::hex << sim->state_hash();
     }
+    // 2 threads that keep this small yard's passes on the calling thread
+    // (for_chunks' default threshold): the same chunks, the same hash.
+    auto unshared = make_yard(busy_yard(2));
+    unshared->run(300);
+    EXPECT_EQ(unshared->state_hash(), pinned) << "got 0x" << std::hex << unshared->state_hash();
 }
 
 TEST(Determinism, SaveRestoreReplaysExactly) {
-    auto sim = make_yard(busy_yard(1));
+    auto sim = busy(1);
     sim->run(100);
     const auto snap = sim->save();
     sim->run(150);
@@ -73,7 +86,7 @@ TEST(Determinism, SaveRestoreReplaysExactly) {
 }
 
 TEST(Determinism, MassBalancedEveryTick) {
-    auto sim = make_yard(busy_yard(2));
+    auto sim = busy(2);
     for (int t = 0; t < 600; ++t) {
         sim->tick();
         const MassReport m = sim->mass();

@@ -4,6 +4,7 @@
 // spawn, land, roll, smooth, spill, hit the sphere, and the sky map refreshes
 // as the wind turns) must make none, on 1 and on 2 threads.
 #include "systems/sample_scenes.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -126,6 +127,7 @@ void overload_edges(Simulation& sim) {
 /// the wind turns) with its roof edges over their limit, so it spills at once.
 std::unique_ptr<Simulation> busy_scene(unsigned threads) {
     auto sim = make_stormy_yard(threads);
+    test::share_work_at_any_size(*sim); // the pool's hand-off must not allocate either
     overload_edges(*sim);
     return sim;
 }

@@ -8,6 +8,7 @@
 #include "systems/sample_scenes.hpp"
 #include "systems/systems.hpp"
 #include "tests/hard_cases/hard_case_util.hpp"
+#include "tests/support/share_work.hpp"
 #include "tests/support/snapshot_check.hpp"
 
 #include <gtest/gtest.h>
@@ -84,6 +85,7 @@ TEST(Snapshot, RestoreIntoATwinOnOneOrTwoThreadsContinuesBitForBit) {
         // A twin that never ticked: every cache is built for the first time
         // after the restore.
         auto twin = make_stormy_yard(threads);
+        test::share_work_at_any_size(*twin);
         twin->restore(*snap);
         for (std::uint64_t t = 0; t < ahead_ticks; ++t) {
             twin->tick();

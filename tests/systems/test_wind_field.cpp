@@ -6,6 +6,7 @@
 #include "systems/sample_scenes.hpp"
 #include "systems/simulation.hpp"
 #include "systems/wind_field_solver.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -129,6 +130,7 @@ std::unique_ptr<Simulation> yard_in_field(unsigned threads) {
     o.prefill = 40000; // more than two chunks of flake_grain, so threads share work
     o.emitter_rate = 6000.0f;
     auto sim = make_yard(o);
+    test::share_work_at_any_size(*sim);
     Wind gusty = sim->world().resource<Wind>();
     gusty.gust_strength = 2.0f;
     gusty.gust_rate = 0.5f;
