@@ -21,7 +21,9 @@ set(SNOW_SIM_HEADERS
     systems/fog.hpp systems/geometry.hpp systems/mass_ledger.hpp systems/occlusion.hpp
     systems/sim_config.hpp systems/sim_counters.hpp systems/simulation.hpp
     systems/simulation_error.hpp systems/snapshot.hpp systems/snow_cover.hpp
-    systems/snow_surface.hpp systems/spectral_snow.hpp systems/units.hpp systems/wind.hpp)
+    systems/snow_surface.hpp systems/source_versions.hpp systems/spectral_snow.hpp
+    systems/units.hpp systems/limits.hpp systems/wind.hpp systems/wind_field.hpp
+    systems/wind_transport.hpp)
 set(SNOW_SCENE_HEADERS
     include/snow/scene.hpp
     game/scene/scene_loader.hpp render/scene_visuals.hpp)
@@ -84,11 +86,13 @@ function(snow_public_target target root listed forbidden)
     if(NOT TARGET ${target})
         return()
     endif()
-    set(reached ${SNOW_SIM_HEADERS} ${${listed}})
-    list(REMOVE_DUPLICATES reached)
-    snow_check_header_closure(${root} reached "${forbidden}")
+    # Not named `reached`: snow_check_header_closure computes its own
+    # `reached`, which would shadow this list and make the check vacuous.
+    set(public_headers ${SNOW_SIM_HEADERS} ${${listed}})
+    list(REMOVE_DUPLICATES public_headers)
+    snow_check_header_closure(${root} public_headers "${forbidden}")
     set(SNOW_EXPORTED ${SNOW_EXPORTED} ${target} PARENT_SCOPE)
-    set(SNOW_INSTALLED_HEADERS ${SNOW_INSTALLED_HEADERS} ${reached} PARENT_SCOPE)
+    set(SNOW_INSTALLED_HEADERS ${SNOW_INSTALLED_HEADERS} ${public_headers} PARENT_SCOPE)
 endfunction()
 snow_public_target(snow_sim include/snow/snow.hpp SNOW_SIM_HEADERS "^(render|game)/")
 snow_public_target(snow_scene include/snow/scene.hpp SNOW_SCENE_HEADERS "^render/.*(context|renderer)")
