@@ -90,11 +90,13 @@ bool is_long(const Context& c, float dx, float dy, float dz) {
 }
 
 /// The path (x0, y0, z0)→(x, y, z) comes near `b` (its bounding box meets
-/// the box). Selects only, so the flagging loop stays branch-free.
+/// the box). Written as ors of plain compares, not min/max: GCC 12 turns a
+/// compare of a select into a select of masks, which AVX-512 cannot
+/// vectorise, and the flagging loop must stay branch-free and vector.
 bool path_near(const Aabb& b, float x, float y, float z, float x0, float y0, float z0) {
-    const bool meets_x = ((x < x0 ? x : x0) <= b.max.x) & ((x < x0 ? x0 : x) >= b.min.x);
-    const bool meets_y = ((y < y0 ? y : y0) <= b.max.y) & ((y < y0 ? y0 : y) >= b.min.y);
-    const bool meets_z = ((z < z0 ? z : z0) <= b.max.z) & ((z < z0 ? z0 : z) >= b.min.z);
+    const bool meets_x = ((x <= b.max.x) | (x0 <= b.max.x)) & ((x >= b.min.x) | (x0 >= b.min.x));
+    const bool meets_y = ((y <= b.max.y) | (y0 <= b.max.y)) & ((y >= b.min.y) | (y0 >= b.min.y));
+    const bool meets_z = ((z <= b.max.z) | (z0 <= b.max.z)) & ((z >= b.min.z) | (z0 >= b.min.z));
     return meets_x & meets_y & meets_z;
 }
 
