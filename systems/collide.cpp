@@ -1,10 +1,12 @@
 // collide: flakes against the bounds, spheres, boxes and mesh tops ([WF §4];
 // meshes through the sky map of [SKY]). Detection runs in parallel over
-// fixed chunks of slots; removals are applied afterwards in slot order, so the
-// free stack and the state hash do not depend on the thread count.
+// fixed chunks of slots, block by block (flake_stages.hpp); removals are
+// applied afterwards in slot order, so the free stack and the state hash do
+// not depend on the thread count.
 #include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
 #include "systems/flake_pool.hpp"
+#include "systems/flake_stages.hpp"
 #include "systems/jobs.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/narrow_phase.hpp"
@@ -33,19 +35,17 @@ enum class Removal : std::uint8_t { bounds, sphere, bare };
 /// Texels per side of a block of the mesh-top summary.
 constexpr std::uint32_t block_shift = 3;
 
-/// World resource private to this file: per-slot "needs work" flags and
-/// candidate/removal lists (chunk c uses [c·flake_grain, ...)), sized to the
-/// pool capacity once; the SnowSurface of each ColliderGrid::holder_surfaces
-/// entry and of each cover (rebuilt from SourceVersions::solids and
+/// Private to this file: candidate/removal lists (chunk c uses
+/// [c·flake_grain, ...)), sized to the pool capacity once; the SnowSurface of each
+/// ColliderGrid::holder_surfaces entry and of each cover (rebuilt from SourceVersions::solids and
 /// ::surfaces); and, per 8×8 block of the
 /// occlusion map, the highest mesh top in it, so most flakes skip the
 /// (cache-missing) texel lookup (rebuilt from the map's version and
 /// SourceVersions::solids).
 struct CollideScratch {
-    std::vector<std::uint8_t> flags;
     std::vector<std::uint32_t> slots;
     std::vector<Removal> reasons;
-    std::vector<std::uint32_t> counts;
+    std::vector<std::uint32_t> counts; ///< removals listed per chunk so far
     std::vector<const SnowSurface*> surfaces;
     std::vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
     bool surfaces_built = false;
@@ -270,11 +270,12 @@ void push_out_of_bodies(const Context& c, const glm::vec3& p0, glm::vec3& p, glm
 }
 
 /// Every collider test for one flake that may meet something (finite position).
-Outcome resolve(const Context& c, std::size_t i) {
+Outcome resolve(const Context& c, const PathStarts& st, std::size_t i) {
     FlakePool& f = *c.pool;
     glm::vec3 p{f.px[i], f.py[i], f.pz[i]};
     glm::vec3 v{f.vx[i], f.vy[i], f.vz[i]};
-    const glm::vec3 p0{f.start_x[i], f.start_y[i], f.start_z[i]};
+    const std::size_t o = i - st.base;
+    const glm::vec3 p0{st.x[o], st.y[o], st.z[o]};
     bool moved = false, done = false;
     Outcome out = grid_colliders(c, p0, p, v, moved, done);
     if (out == Outcome::keep && !done && c.map != nullptr) {
@@ -302,47 +303,60 @@ Outcome resolve(const Context& c, std::size_t i) {
 /// path, or low enough to meet a collider near them. Selects only, so it
 /// vectorises; most flakes are above everything near them and are never
 /// looked at again.
-void flag_chunk(const Context& c, std::size_t b, std::size_t e, std::uint8_t* __restrict flags) {
+void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
+                std::uint8_t* __restrict flags) {
     const FlakePool& f = *c.pool;
     const ColliderGrid& g = *c.grid;
-    const std::uint32_t* mass = f.mass_units.data();
-    const float* px = f.px.data();
-    const float* py = f.py.data();
-    const float* pz = f.pz.data();
-    const float* sx = f.start_x.data();
-    const float* sy = f.start_y.data();
-    const float* sz = f.start_z.data();
+    const std::uint32_t* mass = f.mass_units.data() + b;
+    const float* px = f.px.data() + b;
+    const float* py = f.py.data() + b;
+    const float* pz = f.pz.data() + b;
+    const float* sx = st.x + (b - st.base);
+    const float* sy = st.y + (b - st.base);
+    const float* sz = st.z + (b - st.base);
     const float* reach = g.cell_reach.data();
     const Aabb bb = c.bounds;
-    for (std::size_t i = b; i < e; ++i) {
-        const float x = px[i], y = py[i], z = pz[i];
+    const Aabb body_box = c.body_box;
+    for (std::size_t j = 0; j < e - b; ++j) {
+        const float x = px[j], y = py[j], z = pz[j];
         // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
         const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];
-        const float y0 = sy[i];
+        const float y0 = sy[j];
         const bool low = !((y < y0 ? y : y0) > top);
-        const bool far = is_long(c, x - sx[i], y - y0, z - sz[i]);
-        const bool body = path_near(c.body_box, x, y, z, sx[i], y0, sz[i]);
-        flags[i - b] = (mass[i] != 0) & (!inside | low | far | body) ? 1 : 0;
+        const bool far = is_long(c, x - sx[j], y - y0, z - sz[j]);
+        const bool body = path_near(body_box, x, y, z, sx[j], y0, sz[j]);
+        flags[j] = (mass[j] != 0) & (!inside | low | far | body) ? 1 : 0;
     }
 }
 
-/// Detection over slots [b, e) of one chunk: flag, list the flagged slots,
-/// handle them, and compact the list in place to the removals.
-void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_t e) {
+} // namespace
+
+/// This tick's context and lists (the world resource of this file).
+struct CollideTick {
+    CollideScratch scratch;
+    Context context;
+};
+
+std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t chunk,
+                                             const PathStarts& st, std::size_t b, std::size_t e) {
+    const Context& c = t.context;
     const FlakePool& f = *c.pool;
     const float* px = f.px.data();
     const float* py = f.py.data();
     const float* pz = f.pz.data();
     const Aabb& bb = c.bounds;
-    std::uint8_t* flags = c.scratch->flags.data() + chunk * flake_grain;
+    alignas(64) std::uint8_t flags[flake_block];
+    flag_block(c, st, b, e, flags);
+    // The chunk's lists: removals so far, then this block's candidates,
+    // compacted in place to its removals.
     std::uint32_t* slots = c.scratch->slots.data() + chunk * flake_grain;
     Removal* reasons = c.scratch->reasons.data() + chunk * flake_grain;
-    flag_chunk(c, b, e, flags);
+    const std::uint32_t first = c.scratch->counts[chunk];
     // List the flagged slots, 8 flags per word: most words are zero (flakes
     // high above everything), so the scan costs a load per 8 slots.
-    std::uint32_t candidates = 0;
+    std::uint32_t candidates = first;
     const std::size_t m = e - b;
     const std::size_t whole = m & ~std::size_t{7};
     for (std::size_t j = 0; j < whole; j += 8) {
@@ -356,13 +370,13 @@ void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_
         slots[candidates] = static_cast<std::uint32_t>(b + j);
         candidates += flags[j];
     }
-    std::uint32_t n = 0;
-    for (std::uint32_t k = 0; k < candidates; ++k) {
+    std::uint32_t n = first;
+    for (std::uint32_t k = first; k < candidates; ++k) {
         const std::uint32_t i = slots[k];
         // Colliders first: a flake whose path crosses a roof and ends below the
         // bounds floor in the same tick is stopped by the roof, not removed.
         if (std::isfinite(px[i]) && std::isfinite(py[i]) && std::isfinite(pz[i])) {
-            const Outcome o = resolve(c, i);
+            const Outcome o = resolve(c, st, i);
             if (o != Outcome::keep) {
                 slots[n] = i; // n <= k: the compaction never overtakes the reading
                 reasons[n++] = o == Outcome::sphere ? Removal::sphere : Removal::bare;
@@ -377,16 +391,14 @@ void detect_chunk(const Context& c, std::size_t chunk, std::size_t b, std::size_
         }
     }
     c.scratch->counts[chunk] = n;
+    return {slots + first, n - first};
 }
 
-CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid& grid,
-                            const SourceVersions& versions) {
-    auto* s = w.try_resource<CollideScratch>();
-    if (s == nullptr) {
-        s = &w.set_resource<CollideScratch>();
-    }
+namespace {
+
+void update_scratch(World& w, CollideScratch* s, const FlakePool& pool, const ColliderGrid& grid,
+                    const SourceVersions& versions) {
     // Sizes change only with the pool capacity: no steady-tick allocation.
-    s->flags.resize(pool.capacity());
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
@@ -408,7 +420,6 @@ CollideScratch& scratch_for(World& w, const FlakePool& pool, const ColliderGrid&
         s->surfaces_version = versions.surfaces;
         s->surfaces_built = true;
     }
-    return *s;
 }
 
 /// Rebuilds the per-block highest mesh top when the map or the meshes changed.
@@ -439,13 +450,20 @@ void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const Collid
 
 } // namespace
 
-void collide_system(World& w) {
+CollideTick& collide_begin(World& w) {
     FlakePool& pool = w.resource<FlakePool>();
     const SourceVersions versions = source_versions(w);
     const ColliderGrid& grid = update_collider_grid(w);
-    CollideScratch& scratch = scratch_for(w, pool, grid, versions);
+    auto* t = w.try_resource<CollideTick>();
+    if (t == nullptr) {
+        t = &w.set_resource<CollideTick>();
+    }
+    CollideScratch& scratch = t->scratch;
+    update_scratch(w, &scratch, pool, grid, versions);
+    std::fill(scratch.counts.begin(), scratch.counts.end(), 0u);
 
-    Context c;
+    Context& c = t->context;
+    c = Context{};
     c.pool = &pool;
     c.grid = &grid;
     const auto* map = w.try_resource<OcclusionMap>();
@@ -480,17 +498,15 @@ void collide_system(World& w) {
     c.far_y = shear > 0.0f ? 0.9f * std::min(grid.cell_size_x, grid.cell_size_z) / shear
                            : std::numeric_limits<float>::infinity();
     c.scratch = &scratch;
+    return *t;
+}
 
-    // Slots past slot_end were never alive: no work there.
-    const std::size_t n = pool.slot_end;
-    for_chunks(w, n, flake_grain, [p = &c](std::size_t chunk, std::size_t b, std::size_t e) {
-        detect_chunk(*p, chunk, b, e);
-    });
-
+void collide_end(World& w, const CollideTick& t) {
     // Sequential, in slot order: the ledger and the free stack see one order.
+    const CollideScratch& scratch = t.scratch;
+    FlakePool& pool = w.resource<FlakePool>();
     auto& ledger = w.resource<MassLedger>();
-    const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
-    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+    for (std::size_t chunk = 0; chunk < scratch.counts.size(); ++chunk) {
         const std::size_t base = chunk * flake_grain;
         for (std::uint32_t k = 0; k < scratch.counts[chunk]; ++k) {
             const std::uint32_t slot = scratch.slots[base + k];

@@ -2,12 +2,13 @@
 // ([WF §4]: the height field grows by the flake's mass), then rolls at most
 // one cell by the deposition rules of [ZCL §IV].
 //
-// Detection runs in parallel over fixed chunks of flake slots and only writes
-// landing records; the records are applied in slot order afterwards, so the
-// result is the same for any thread count.
+// Detection runs in parallel over fixed chunks of flake slots, block by block
+// (flake_stages.hpp), and only writes landing records; the records are applied in slot order
+// afterwards, so the result is the same for any thread count.
 #include "ecs/rng.hpp"
 #include "systems/deposit_bins.hpp"
 #include "systems/flake_pool.hpp"
+#include "systems/flake_stages.hpp"
 #include "systems/jobs.hpp"
 #include "systems/random_streams.hpp"
 #include "systems/sim_config.hpp"
@@ -32,30 +33,28 @@ struct LandingRecord {
     std::uint32_t cell;
 };
 
-/// World resource: the prefilter bins and one landing buffer per chunk of
-/// flake_grain slots (reserved once, cleared every tick).
-struct DepositScratch {
+} // namespace
+
+/// World resource: the prefilter bins, one landing buffer per chunk of
+/// flake_grain slots (reserved once, cleared every tick), and what a
+/// detection block reads this tick.
+struct DepositTick {
     DepositBins bins;
-    std::vector<std::vector<LandingRecord>> chunks;
+    mutable std::vector<std::vector<LandingRecord>> chunks; ///< each written by its chunk's blocks
+    const FlakePool* pool = nullptr;
+    const SnowSurface* surfaces = nullptr;
 };
 
-/// Everything a detection chunk reads; passed by one pointer so the job
-/// closure needs no allocation.
-struct DetectPass {
-    const DepositBins* bins;
-    const FlakePool* pool;
-    const SnowSurface* surfaces;
-    std::vector<std::vector<LandingRecord>>* out;
-};
+namespace {
 
 /// The surface flake `slot` lands on this tick, if any: it reached the snow
 /// top from above (crossed it this tick, sits on it, or is inside the snow
 /// layer). A flake below a surface's bare top never lands on it. The highest
 /// such surface wins; ties go to the first in pool order.
-bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, float y_start,
+bool find_landing(const DepositTick& p, std::uint32_t bin, std::uint32_t slot, float y_start,
                   LandingRecord& rec) {
     const FlakePool& f = *p.pool;
-    const DepositBins& d = *p.bins;
+    const DepositBins& d = p.bins;
     const float x = f.px[slot], y = f.py[slot], z = f.pz[slot];
     float best = -std::numeric_limits<float>::infinity();
     bool found = false;
@@ -82,52 +81,51 @@ bool find_landing(const DetectPass& p, std::uint32_t bin, std::uint32_t slot, fl
     return found;
 }
 
-/// Slots tested per prefilter block (a multiple of 8: flags are scanned 8 at a time).
-constexpr std::size_t block = 512;
+/// The next slot of `removed` at or after `slot` is `slot` (advancing `next`).
+bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uint32_t slot) {
+    while (next < removed.size() && removed[next] < slot) {
+        ++next;
+    }
+    return next < removed.size() && removed[next] == slot;
+}
+
+} // namespace
 
 /// Detection over slots [b, e). The bins' branch-free pass over positions
 /// flags flakes low enough to land on some surface under them; only those
 /// get the exact test, against the start of their path this tick.
-void detect_chunk(const DetectPass& p, std::size_t chunk, std::size_t b, std::size_t e) {
-    const DepositBins& d = *p.bins;
-    std::vector<LandingRecord>& out = (*p.out)[chunk];
-    out.clear();
+void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st, std::size_t b,
+                   std::size_t e, std::span<const std::uint32_t> removed) {
+    const DepositBins& d = p.bins;
+    std::vector<LandingRecord>& out = p.chunks[chunk];
     const float* px = p.pool->px.data();
     const float* py = p.pool->py.data();
     const float* pz = p.pool->pz.data();
-    const float* start_y = p.pool->start_y.data();
-    alignas(64) std::uint8_t flag[block];
-    for (std::size_t base = b; base < e; base += block) {
-        const std::size_t m = std::min(block, e - base);
-        flag_deposit_candidates(d, px + base, py + base, pz + base, m, flag);
-        std::fill(flag + m, flag + block, std::uint8_t{0});
-        // may_land() reads start_y, which the pass above did not stream:
-        // request the flagged ones first, so their cache misses overlap.
-        for (std::size_t j = 0; j < m; j += 8) {
-            std::uint64_t word = 0;
-            std::memcpy(&word, flag + j, sizeof word);
-            for (; word != 0; word &= word - 1) {
-                __builtin_prefetch(start_y + base + j + std::countr_zero(word) / 8);
+    alignas(64) std::uint8_t flag[flake_block];
+    const std::size_t m = e - b;
+    flag_deposit_candidates(d, px + b, py + b, pz + b, m, flag);
+    std::fill(flag + m, flag + flake_block, std::uint8_t{0});
+    std::size_t next_removed = 0;
+    for (std::size_t j = 0; j < m; j += 8) {
+        std::uint64_t word = 0;
+        std::memcpy(&word, flag + j, sizeof word);
+        for (; word != 0; word &= word - 1) {
+            const auto slot = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
+            const float y_start = st.y[slot - st.base];
+            if (!d.may_land(py[slot], y_start) || skipped(removed, next_removed, slot)) {
+                continue;
             }
-        }
-        for (std::size_t j = 0; j < m; j += 8) {
-            std::uint64_t word = 0;
-            std::memcpy(&word, flag + j, sizeof word);
-            for (; word != 0; word &= word - 1) {
-                const auto slot = static_cast<std::uint32_t>(base + j + std::countr_zero(word) / 8);
-                if (!d.may_land(py[slot], start_y[slot])) {
-                    continue;
-                }
-                std::uint32_t bin = 0;
-                LandingRecord rec{};
-                if (p.pool->mass_units[slot] != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
-                    find_landing(p, bin, slot, start_y[slot], rec)) {
-                    out.push_back(rec);
-                }
+            std::uint32_t bin = 0;
+            LandingRecord rec{};
+            if (p.pool->mass_units[slot] != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
+                find_landing(p, bin, slot, y_start, rec)) {
+                out.push_back(rec);
             }
         }
     }
 }
+
+namespace {
 
 /// [ZCL §IV] deposition rules for snow arriving on cell c: no lower
 /// neighbour -> stays (rule 1); otherwise one of the n lower neighbours with
@@ -151,18 +149,15 @@ std::size_t roll_target(const SnowSurface& s, std::size_t c, const RngKey& key) 
 
 } // namespace
 
-void deposit_system(World& w) {
+DepositTick* deposit_begin(World& w) {
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& pool = w.resource<FlakePool>();
     if (surfaces.empty() || pool.alive == 0) {
-        return;
+        return nullptr;
     }
-    const auto& cfg = w.resource<SimConfig>();
-    const std::uint64_t tick = w.resource<SimClock>().tick;
-    auto& counters = w.resource<SimCounters>();
-    auto* d = w.try_resource<DepositScratch>();
+    auto* d = w.try_resource<DepositTick>();
     if (d == nullptr) {
-        d = &w.set_resource<DepositScratch>();
+        d = &w.set_resource<DepositTick>();
     }
     update_deposit_bins(d->bins, surfaces, source_versions(w).surfaces);
     // Buffers for the whole pool (allocated once); work only up to slot_end.
@@ -173,18 +168,23 @@ void deposit_system(World& w) {
             c.reserve(256);
         }
     }
-    const std::size_t n = pool.slot_end;
+    for (auto& c : d->chunks) {
+        c.clear();
+    }
+    d->pool = &pool;
+    d->surfaces = surfaces.data();
+    return d;
+}
 
-    const DetectPass pass{&d->bins, &pool, surfaces.data(), &d->chunks};
-    for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {
-        detect_chunk(*p, c, b, e);
-    });
-
+void deposit_end(World& w, const DepositTick& d) {
+    auto& surfaces = w.pool<SnowSurface>().components();
+    auto& pool = w.resource<FlakePool>();
+    const auto& cfg = w.resource<SimConfig>();
+    const std::uint64_t tick = w.resource<SimClock>().tick;
+    auto& counters = w.resource<SimCounters>();
     // Apply in chunk order = slot order: later landings see earlier ones' snow.
-    // Only this tick's chunks: those past slot_end hold nothing from this tick.
-    const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
-    for (std::size_t c = 0; c < chunks; ++c) {
-        for (const LandingRecord& r : d->chunks[c]) {
+    for (const auto& chunk : d.chunks) {
+        for (const LandingRecord& r : chunk) {
             SnowSurface& s = surfaces[r.surface];
             const std::size_t dst =
                 roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});

@@ -5,11 +5,10 @@
 namespace snow {
 
 void FlakePool::reset(std::uint32_t capacity) {
-    for (auto* v : {&px, &pz, &start_x, &start_z, &vx, &vy, &vz, &k_over_m, &size}) {
+    for (auto* v : {&px, &pz, &vx, &vy, &vz, &k_over_m, &size}) {
         v->assign(capacity, 0.0f);
     }
     py.assign(capacity, parked_y);
-    start_y.assign(capacity, parked_y);
     mass_units.assign(capacity, 0);
     free_stack.resize(capacity);
     // Highest slot at the bottom so slot 0 is handed out first.

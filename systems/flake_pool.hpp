@@ -54,12 +54,6 @@ struct FlakePool {
     PoolArray<float> px, py, pz;
     PoolArray<float> vx, vy, vz;
     PoolArray<float> k_over_m; ///< linear drag coefficient over mass (1/s)
-    /// Where each slot's path started this tick: integrate swaps these with
-    /// px/py/pz and moves the flakes from them, so collide and deposit test
-    /// the path the integrator really took. Rewritten by every integrate
-    /// before anything reads it: derived data, neither hashed nor needed by a
-    /// restore (source_versions.hpp).
-    PoolArray<float> start_x, start_y, start_z;
     // cold
     PoolArray<std::uint32_t> mass_units;   ///< 0 = free slot
     PoolArray<float> size;                 ///< diameter (m), for rendering

@@ -2,9 +2,9 @@
 // rule per SimConfig::integrator. Flakes too stiff for the chosen rule
 // (c·dt past its limit) take the exact update instead and are counted.
 //
-// Each flake moves from FlakePool::start_* (this tick's path start, swapped
-// in from the positions) into px/py/pz: the start is produced here, once, for
-// collide and deposit. With a declared wind field each flake drags towards
+// Each flake moves in place; its old position goes to the block's PathStarts
+// (flake_stages.hpp): the path start is produced here, once, for collide and
+// deposit. With a declared wind field each flake drags towards
 // the field's wind at its path start (trilinear, WindSampler::at) instead of
 // the one global wind; the pass is the same loop with that read inside.
 //
@@ -14,6 +14,7 @@
 // lane (no FMA contraction, no reassociation), so SIMD and scalar builds agree
 // bit for bit.
 #include "systems/flake_pool.hpp"
+#include "systems/flake_stages.hpp"
 #include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
@@ -28,12 +29,6 @@
 namespace snow {
 
 namespace {
-
-/// World resource: per-chunk stiff counts of the last integrate pass, sized
-/// for the whole pool once so no tick allocates.
-struct StiffCounts {
-    std::vector<std::uint32_t> per_chunk;
-};
 
 using AxisRule = void (*)(float&, float&, float, float, float, float);
 
@@ -54,11 +49,11 @@ struct GlobalWind {
     }
 };
 
-/// Base pointers of the pool arrays one pass reads and writes.
+/// Base pointers of the arrays one block reads and writes.
 struct Lanes {
-    const float* sx; ///< path starts (the positions at the start of the tick)
-    const float* sy;
-    const float* sz;
+    float* sx; ///< path starts: written with the positions before the move
+    float* sy;
+    float* sz;
     float* px;
     float* py;
     float* pz;
@@ -76,21 +71,24 @@ inline float blend(std::uint32_t mask, float a, float b) {
 }
 
 /// The rule for every alive slot of [0, n) whose c·dt <= limit; every other
-/// slot keeps its start. Returns how many alive slots were over the limit
+/// slot keeps its position. Every slot's position before the move goes to
+/// sx/sy/sz. Returns how many alive slots were over the limit
 /// (left at their start for the exact pass). The arrays are distinct
 /// (__restrict): that spares GCC the run-time alias checks it would otherwise
 /// need (it gives up past 10 and stays scalar), and Clang the same.
 template <AxisRule rule, typename Air>
-std::uint32_t guarded_lanes(const float* __restrict sx, const float* __restrict sy,
-                            const float* __restrict sz, float* __restrict px, float* __restrict py,
-                            float* __restrict pz, float* __restrict vx, float* __restrict vy,
-                            float* __restrict vz, const float* __restrict kom,
-                            const std::uint32_t* __restrict mass, std::size_t n, const Params q,
-                            const Air air, const float limit) {
+std::uint32_t guarded_lanes(float* __restrict sx, float* __restrict sy, float* __restrict sz,
+                            float* __restrict px, float* __restrict py, float* __restrict pz,
+                            float* __restrict vx, float* __restrict vy, float* __restrict vz,
+                            const float* __restrict kom, const std::uint32_t* __restrict mass,
+                            std::size_t n, const Params q, const Air air, const float limit) {
     std::uint32_t stiff = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const float c = kom[i];
-        const float x0 = sx[i], y0 = sy[i], z0 = sz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
+        const float x0 = px[i], y0 = py[i], z0 = pz[i], u0 = vx[i], v0 = vy[i], s0 = vz[i];
+        sx[i] = x0;
+        sy[i] = y0;
+        sz[i] = z0;
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
         float wx, wy, wz;
         air.at(x0, y0, z0, wx, wy, wz);
@@ -138,97 +136,93 @@ void exact_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air, 
     }
 }
 
-/// Everything one chunk job reads; the closure captures only a pointer to it,
-/// so handing the job to the pool allocates nothing.
-struct IntegratePass {
-    Lanes lanes;
-    Params q;
-    const WindField* field; ///< null: every flake feels q.w
-    Integrator kind;
-    std::uint32_t* stiff; ///< one count per chunk
+} // namespace
+
+/// Everything a block reads this tick (the world resource of this file).
+struct IntegrateTick {
+    Lanes pool{}; ///< the pool's arrays (sx/sy/sz unused: each block gets its own)
+    Params q{};
+    const WindField* field = nullptr; ///< null: every flake feels q.w
+    Integrator kind = Integrator::explicit_euler;
+    /// One count per chunk, sized once per pool size; each chunk's blocks
+    /// (one thread, one after another) add to its own entry only.
+    mutable std::vector<std::uint32_t> stiff;
 };
 
+namespace {
+
 template <typename Air>
-std::uint32_t integrate_chunk(const IntegratePass& p, const Air& air, std::size_t b,
-                              std::size_t e) {
-    const Lanes& a = p.lanes;
-    const Lanes l{a.sx + b, a.sy + b, a.sz + b, a.px + b,  a.py + b,  a.pz + b,
-                  a.vx + b, a.vy + b, a.vz + b, a.kom + b, a.mass + b};
-    const std::size_t n = e - b;
+std::uint32_t integrate_lanes(const IntegrateTick& t, const Air& air, const Lanes& l,
+                              std::size_t n) {
     // Rules without a stability limit get an infinite one.
     constexpr float none = 3.0e38f;
     std::uint32_t stiff = 0;
     float limit = none;
-    switch (p.kind) {
+    switch (t.kind) {
     case Integrator::explicit_euler:
         limit = integrate::explicit_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, t.q, air, limit);
         break;
     case Integrator::automatic:
         limit = integrate::automatic_limit;
-        stiff = guarded_pass<integrate::explicit_euler>(l, n, p.q, air, limit);
+        stiff = guarded_pass<integrate::explicit_euler>(l, n, t.q, air, limit);
         break;
     case Integrator::rk4:
         limit = integrate::rk4_limit;
-        stiff = guarded_pass<integrate::rk4>(l, n, p.q, air, limit);
+        stiff = guarded_pass<integrate::rk4>(l, n, t.q, air, limit);
         break;
     case Integrator::semi_implicit_euler:
-        guarded_pass<integrate::semi_implicit_euler>(l, n, p.q, air, none);
+        guarded_pass<integrate::semi_implicit_euler>(l, n, t.q, air, none);
         break;
     case Integrator::exponential:
-        guarded_pass<integrate::exponential>(l, n, p.q, air, none);
+        guarded_pass<integrate::exponential>(l, n, t.q, air, none);
         break;
     }
     if (stiff > 0) {
-        exact_pass(l, n, p.q, air, limit);
+        exact_pass(l, n, t.q, air, limit);
     }
     return stiff;
 }
 
-std::uint32_t integrate_chunk(const IntegratePass& p, std::size_t b, std::size_t e) {
-    if (p.field != nullptr) {
-        return integrate_chunk(p, p.field->sampler(), b, e);
-    }
-    return integrate_chunk(p, GlobalWind{p.q.w.x, p.q.w.y, p.q.w.z}, b, e);
-}
-
 } // namespace
 
-void integrate_system(World& w) {
+IntegrateTick& integrate_begin(World& w) {
     const auto& cfg = w.resource<SimConfig>();
     FlakePool& f = w.resource<FlakePool>();
     const auto* wind = w.try_resource<Wind>();
-    auto* scratch = w.try_resource<StiffCounts>();
-    if (scratch == nullptr) {
-        scratch = &w.set_resource<StiffCounts>();
+    auto* t = w.try_resource<IntegrateTick>();
+    if (t == nullptr) {
+        t = &w.set_resource<IntegrateTick>();
     }
-    std::vector<std::uint32_t>& stiff = scratch->per_chunk;
-    if (stiff.size() < JobPool::chunk_count(f.capacity(), flake_grain)) {
-        stiff.resize(JobPool::chunk_count(f.capacity(), flake_grain)); // once per pool size
-    }
-    // This tick's positions become its path starts; the pass writes the new
-    // positions over the old starts (every slot below slot_end). Slots past
-    // slot_end were never alive: no work there, and both arrays hold their
-    // reset values.
-    f.px.swap(f.start_x);
-    f.py.swap(f.start_y);
-    f.pz.swap(f.start_z);
-    const std::size_t n = f.slot_end;
-    const std::size_t chunks = JobPool::chunk_count(n, flake_grain);
-    const IntegratePass pass{{f.start_x.data(), f.start_y.data(), f.start_z.data(), f.px.data(),
-                              f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(), f.vz.data(),
-                              f.k_over_m.data(), f.mass_units.data()},
-                             {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt},
-                             w.try_resource<WindField>(),
-                             cfg.integrator,
-                             stiff.data()};
-    for_chunks(w, n, flake_grain, [p = &pass](std::size_t c, std::size_t b, std::size_t e) {
-        p->stiff[c] = integrate_chunk(*p, b, e);
-    });
+    t->pool = {
+        nullptr,     nullptr,     nullptr,     f.px.data(),       f.py.data(),        f.pz.data(),
+        f.vx.data(), f.vy.data(), f.vz.data(), f.k_over_m.data(), f.mass_units.data()};
+    t->q = {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt};
+    t->field = w.try_resource<WindField>();
+    t->kind = cfg.integrator;
+    t->stiff.resize(
+        JobPool::chunk_count(f.capacity(), flake_grain)); // allocates once per pool size
+    std::fill(t->stiff.begin(), t->stiff.end(), 0u);
+    return *t;
+}
+
+void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts& starts,
+                     std::size_t b, std::size_t e) {
+    const Lanes& a = t.pool;
+    const std::size_t o = b - starts.base;
+    const Lanes l{starts.x + o, starts.y + o, starts.z + o, a.px + b,  a.py + b,  a.pz + b,
+                  a.vx + b,     a.vy + b,     a.vz + b,     a.kom + b, a.mass + b};
+    const std::uint32_t stiff =
+        t.field != nullptr ? integrate_lanes(t, t.field->sampler(), l, e - b)
+                           : integrate_lanes(t, GlobalWind{t.q.w.x, t.q.w.y, t.q.w.z}, l, e - b);
+    t.stiff[chunk] += stiff;
+}
+
+void integrate_end(World& w, const IntegrateTick& t) {
     // Per-chunk counts summed in chunk order: independent of the thread count.
     auto& counters = w.resource<SimCounters>();
-    for (std::size_t c = 0; c < chunks; ++c) {
-        counters.stiff_flake_ticks += stiff[c];
+    for (const std::uint32_t s : t.stiff) {
+        counters.stiff_flake_ticks += s;
     }
 }
 

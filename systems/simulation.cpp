@@ -57,9 +57,7 @@ void Simulation::build_schedule() {
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
     schedule_.add("wind_field", wind_field_system, {needs<WindField>()});
-    schedule_.add("integrate", integrate_system, {flakes});
-    schedule_.add("collide", collide_system, {flakes});
-    schedule_.add("deposit", deposit_system, {needs<SnowSurface>(), flakes});
+    schedule_.add("flakes", flake_pass_system, {flakes});
     schedule_.add("carve", carve_system, {needs<Body>(), needs<SnowSurface>()});
     schedule_.add("wind_transport", wind_transport_system,
                   {wind_transport_declared, needs<SnowSurface>()});

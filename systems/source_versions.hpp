@@ -27,8 +27,8 @@
 /// texels are rewritten (a refresh or a restore), for the caches built on it.
 ///
 /// Per-tick data is produced once, by the stage that owns it, and read by the
-/// later stages: the start of each flake's path this tick (FlakePool::start_x
-/// and friends) is written by integrate and read by collide and deposit.
+/// later stages: the start of each flake's path this tick (PathStarts,
+/// flake_stages.hpp) is written by integrate and read by collide and deposit.
 #pragma once
 
 #include "ecs/world.hpp"

@@ -41,7 +41,7 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
     }
     EXPECT_EQ(names,
               (std::vector<std::string>{"cover", "bodies", "spawn", "wind", "wind_field",
-                                        "integrate", "collide", "deposit", "carve",
+                                        "flakes", "carve",
                                         "wind_transport", "redistribute", "spill", "occlusion"}));
 }
 

@@ -115,7 +115,7 @@ TEST(HardCaseThinRoof, NoTunnellingAutomatic) {
 // ~0.25 m below the real one for these decelerating flakes, and a flake that
 // began less than that above the roof would cross it unseen (the bug this
 // suite found; collide and deposit now read the start integrate recorded,
-// FlakePool::start_x/y/z).
+// PathStarts, flake_stages.hpp).
 TEST(HardCaseThinRoof, NoTunnellingExponential) {
     expect_no_tunnelling(Integrator::exponential, 9.81f);
 }

@@ -44,16 +44,14 @@ inline bool same_body(const Body& a, const Body& b) {
            a.segment == b.segment && a.along == b.along && a.carried == b.carried;
 }
 
-/// The live parts of two runs' ends agree bit for bit (the path starts are
-/// scratch of the last integrate and compared too: they must agree as well).
+/// The live parts of two runs' ends agree bit for bit.
 inline ::testing::AssertionResult same_end(const RunEnd& a, const RunEnd& b) {
     const FlakePool& f = a.flakes;
     const FlakePool& g = b.flakes;
     const auto same_arrays = f.px == g.px && f.py == g.py && f.pz == g.pz && f.vx == g.vx &&
                              f.vy == g.vy && f.vz == g.vz && f.k_over_m == g.k_over_m &&
                              f.size == g.size && f.mass_units == g.mass_units &&
-                             f.start_x == g.start_x && f.start_y == g.start_y &&
-                             f.start_z == g.start_z && f.free_stack == g.free_stack;
+                             f.free_stack == g.free_stack;
     if (!same_arrays || f.alive != g.alive || f.max_alive != g.max_alive ||
         f.slot_end != g.slot_end) {
         return ::testing::AssertionFailure() << "flake pools differ";

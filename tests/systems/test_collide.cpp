@@ -1,6 +1,7 @@
 // collide_system against bounds, spheres, boxes and mesh tops ([WF §4], [SKY]).
 #include "ecs/rng.hpp"
 #include "systems/collider_grid.hpp"
+#include "systems/flake_stages.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/random_streams.hpp"
 #include "tests/support/share_work.hpp"
@@ -29,11 +30,12 @@ SimConfig config(std::uint32_t capacity, unsigned threads = 1) {
 std::uint32_t add_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units = 1) {
     World& w = InternalAccess::world(sim);
     FlakePool& f = w.resource<FlakePool>();
+    const PathStarts st = stage_path_starts(w);
     std::uint32_t slot = 0;
     EXPECT_TRUE(f.acquire(slot));
     f.px[slot] = p.x, f.py[slot] = p.y, f.pz[slot] = p.z;
-    f.start_x[slot] = p.x - v.x * dt, f.start_y[slot] = p.y - v.y * dt;
-    f.start_z[slot] = p.z - v.z * dt;
+    st.x[slot] = p.x - v.x * dt, st.y[slot] = p.y - v.y * dt;
+    st.z[slot] = p.z - v.z * dt;
     f.vx[slot] = v.x, f.vy[slot] = v.y, f.vz[slot] = v.z;
     f.mass_units[slot] = units;
     w.resource<MassLedger>().spawned += units;

@@ -2,6 +2,7 @@
 // [ZCL §IV] at their stated frequencies, surface validation, concentrated
 // landing [WF §4, §6] and thread-count independence.
 #include "ecs/rng.hpp"
+#include "systems/flake_stages.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/random_streams.hpp"
 #include "systems/units.hpp"
@@ -42,15 +43,16 @@ SurfaceDef flat(float x0, float z0, float size, float cell, float y = 0.0f) {
 /// v this tick (its path started at p − v·dt); returns its slot.
 std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t units) {
     FlakePool& f = InternalAccess::world(sim).resource<FlakePool>();
+    const PathStarts st = stage_path_starts(InternalAccess::world(sim));
     std::uint32_t slot = 0;
     EXPECT_TRUE(f.acquire(slot));
     f.px[slot] = p.x;
     f.py[slot] = p.y;
     f.pz[slot] = p.z;
     const float dt = sim.config().dt;
-    f.start_x[slot] = p.x - v.x * dt;
-    f.start_y[slot] = p.y - v.y * dt;
-    f.start_z[slot] = p.z - v.z * dt;
+    st.x[slot] = p.x - v.x * dt;
+    st.y[slot] = p.y - v.y * dt;
+    st.z[slot] = p.z - v.z * dt;
     f.vx[slot] = v.x;
     f.vy[slot] = v.y;
     f.vz[slot] = v.z;

@@ -1,0 +1,97 @@
+// The flake pass: integrate, collide and deposit of each block of
+// flake_block slots one after another while the block is in L1, so a flake's
+// data crosses memory once per tick (docs/performance.md "One pass"). Every
+// flake's outcome depends on nothing any other flake of the tick does, and
+// the records are applied in the stages' own order (stiff counts, removals in
+// slot order, then landings in slot order), so the result is the same as the
+// three stages run one after another over the whole pool
+// (FlakePass.SameAsStagesOneAtATime) and for any thread count.
+#include "systems/flake_pool.hpp"
+#include "systems/flake_stages.hpp"
+#include "systems/jobs.hpp"
+#include "systems/systems.hpp"
+
+#include <algorithm>
+
+namespace snow {
+
+namespace {
+
+/// Runs fn(chunk, b, e) over the blocks of each chunk of [0, slot_end).
+template <typename Fn>
+void for_blocks(World& w, const Fn& fn) {
+    const std::size_t n = w.resource<FlakePool>().slot_end;
+    for_chunks(w, n, flake_grain, [&fn](std::size_t chunk, std::size_t b, std::size_t e) {
+        for (std::size_t base = b; base < e; base += flake_block) {
+            fn(chunk, base, std::min(e, base + flake_block));
+        }
+    });
+}
+
+} // namespace
+
+PathStarts stage_path_starts(World& w) {
+    const FlakePool& f = w.resource<FlakePool>();
+    auto* s = w.try_resource<StagePathStarts>();
+    if (s == nullptr) {
+        s = &w.set_resource<StagePathStarts>();
+    }
+    if (s->x.size() != f.capacity()) {
+        s->x = f.px;
+        s->y = f.py;
+        s->z = f.pz;
+    }
+    return {s->x.data(), s->y.data(), s->z.data(), 0};
+}
+
+void flake_pass_system(World& w) {
+    const IntegrateTick& in = integrate_begin(w);
+    const CollideTick& co = collide_begin(w);
+    // Nothing can land without a surface: that stage is skipped (as its own
+    // system it needs a SnowSurface; docs/design.md "What is declared runs").
+    const DepositTick* de = deposit_begin(w);
+    for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
+        alignas(64) float x[flake_block], y[flake_block], z[flake_block];
+        const PathStarts starts{x, y, z, b};
+        integrate_block(in, chunk, starts, b, e);
+        const auto removed = collide_block(co, chunk, starts, b, e);
+        if (de != nullptr) {
+            deposit_block(*de, chunk, starts, b, e, removed);
+        }
+    });
+    integrate_end(w, in);
+    collide_end(w, co);
+    if (de != nullptr) {
+        deposit_end(w, *de);
+    }
+}
+
+void integrate_system(World& w) {
+    const PathStarts starts = stage_path_starts(w);
+    const IntegrateTick& t = integrate_begin(w);
+    for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
+        integrate_block(t, chunk, starts, b, e);
+    });
+    integrate_end(w, t);
+}
+
+void collide_system(World& w) {
+    const PathStarts starts = stage_path_starts(w);
+    const CollideTick& t = collide_begin(w);
+    for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
+        collide_block(t, chunk, starts, b, e);
+    });
+    collide_end(w, t);
+}
+
+void deposit_system(World& w) {
+    const PathStarts starts = stage_path_starts(w);
+    if (const DepositTick* t = deposit_begin(w)) {
+        for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
+            deposit_block(*t, chunk, starts, b, e, {});
+        });
+        deposit_end(w, *t);
+    }
+}
+
+} // namespace snow

@@ -1,0 +1,76 @@
+/// @file flake_stages.hpp
+/// @brief The three per-flake stages of a tick — integrate, collide, deposit —
+/// as block kernels, so the flake pass (flake_pass.cpp) runs all three on one
+/// L1-sized block of slots while it is in cache (docs/performance.md "One
+/// pass"). Each stage has a begin (serial: this tick's context), a block
+/// kernel (parallel over fixed chunks; writes only its flakes and its chunk's
+/// records) and an end (serial: the records applied in slot order). Internal
+/// to systems/.
+#pragma once
+
+#include "ecs/world.hpp"
+#include "systems/flake_pool.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace snow {
+
+/// Slots per block: three stages' data for a block (about 40 B per slot)
+/// stays in a 32 KiB L1 between them. A divisor of flake_grain and a multiple
+/// of 8 (flags are scanned 8 at a time).
+inline constexpr std::size_t flake_block = 512;
+
+/// Where the paths of one block's flakes started this tick: slot i's start
+/// is x[i - base], y[i - base], z[i - base]. Integrate writes it (the
+/// position before its move); collide and deposit test the path from it.
+struct PathStarts {
+    float* x;
+    float* y;
+    float* z;
+    std::size_t base;
+};
+
+/// World resource: path starts for the whole pool, for a stage run on its own
+/// (integrate_system, collide_system, deposit_system: tests and benchmarks
+/// of one stage). The tick's flake pass never uses it: it keeps each block's
+/// starts in a buffer of flake_block slots.
+struct StagePathStarts {
+    PoolArray<float> x, y, z;
+};
+
+/// The pool-wide path starts (base 0), sized to the pool once (a free slot's
+/// start is parked like its position).
+PathStarts stage_path_starts(World& w);
+
+/// This tick's context of each stage, held by a world resource of its file.
+struct IntegrateTick;
+struct CollideTick;
+struct DepositTick;
+
+/// Integrate ([WF §3], [ZCL §III.C]): the rule of SimConfig::integrator for
+/// slots [b, e) of chunk `chunk`, in place, their old positions to `starts`.
+IntegrateTick& integrate_begin(World& w);
+void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts& starts,
+                     std::size_t b, std::size_t e);
+void integrate_end(World& w, const IntegrateTick& t);
+
+/// Collide ([WF §4], [SKY]): bounds, spheres, boxes, mesh tops and bodies for
+/// slots [b, e). Returns the slots of the block it will remove (ascending),
+/// which the later stages skip.
+CollideTick& collide_begin(World& w);
+std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t chunk,
+                                             const PathStarts& starts, std::size_t b,
+                                             std::size_t e);
+void collide_end(World& w, const CollideTick& t);
+
+/// Deposit ([WF §4], [ZCL §IV]): landings of slots [b, e) other than
+/// `removed` (ascending). Begin returns null when nothing can land (no
+/// surface or no flake): then the stage is skipped.
+DepositTick* deposit_begin(World& w);
+void deposit_block(const DepositTick& t, std::size_t chunk, const PathStarts& starts, std::size_t b,
+                   std::size_t e, std::span<const std::uint32_t> removed);
+void deposit_end(World& w, const DepositTick& t);
+
+} // namespace snow
