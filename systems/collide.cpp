@@ -302,7 +302,9 @@ Outcome resolve(const Context& c, const PathStarts& st, std::size_t i) {
 /// Marks the flakes of [b, e) that may need work: out of bounds, on a long
 /// path, or low enough to meet a collider near them. Selects only, so it
 /// vectorises; most flakes are above everything near them and are never
-/// looked at again.
+/// looked at again. Without bodies the box test is left out (its empty box
+/// flags nothing): a tenth of the loop's work.
+template <bool with_bodies>
 void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
                 std::uint8_t* __restrict flags) {
     const FlakePool& f = *c.pool;
@@ -322,11 +324,14 @@ void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size
         // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
-        const float top = reach[g.cell_z(z) * g.nx + g.cell_x(x)];
+        // A signed 32-bit index: GCC gathers with it (vgatherdps); an unsigned
+        // one it widens to 64 bits and loads lane by lane.
+        const auto cell = static_cast<std::int32_t>(g.cell_z(z) * g.nx + g.cell_x(x));
+        const float top = reach[cell];
         const float y0 = sy[j];
         const bool low = !((y < y0 ? y : y0) > top);
         const bool far = is_long(c, x - sx[j], y - y0, z - sz[j]);
-        const bool body = path_near(body_box, x, y, z, sx[j], y0, sz[j]);
+        const bool body = with_bodies && path_near(body_box, x, y, z, sx[j], y0, sz[j]);
         flags[j] = (mass[j] != 0) & (!inside | low | far | body) ? 1 : 0;
     }
 }
@@ -348,7 +353,11 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
     const float* pz = f.pz.data();
     const Aabb& bb = c.bounds;
     alignas(64) std::uint8_t flags[flake_block];
-    flag_block(c, st, b, e, flags);
+    if (c.body_count > 0) {
+        flag_block<true>(c, st, b, e, flags);
+    } else {
+        flag_block<false>(c, st, b, e, flags);
+    }
     // The chunk's lists: removals so far, then this block's candidates,
     // compacted in place to its removals.
     std::uint32_t* slots = c.scratch->slots.data() + chunk * flake_grain;

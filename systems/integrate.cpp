@@ -5,8 +5,8 @@
 // Each flake moves in place; its old position goes to the block's PathStarts
 // (flake_stages.hpp): the path start is produced here, once, for collide and
 // deposit. With a declared wind field each flake drags towards
-// the field's wind at its path start (trilinear, WindSampler::at) instead of
-// the one global wind; the pass is the same loop with that read inside.
+// the field's wind at its path start (trilinear, WindSampler::at, sampled for
+// the whole block first) instead of the one global wind.
 //
 // The guarded pass is one branch-free loop over distinct (__restrict) arrays
 // so GCC and Clang vectorise it (selects need -fno-trapping-math, set
@@ -38,14 +38,37 @@ struct Params {
     float dt;
 };
 
-/// The wind a flake drags towards: the global wind, or the field's at its position.
-/// Both give it as scalars (WindSampler::at): a vec3 per lane stops GCC vectorising.
+/// The wind a flake drags towards: the global wind, or the field's sampled
+/// for each slot of the block before the move (FieldWind). Both give it as
+/// scalars: a vec3 per lane stops GCC vectorising.
 struct GlobalWind {
     float x, y, z;
-    void at(float, float, float, float& wx, float& wy, float& wz) const {
+    void at(std::size_t, float& wx, float& wy, float& wz) const {
         wx = x;
         wy = y;
         wz = z;
+    }
+};
+
+/// The field's wind at each slot's path start, sampled in a loop of its own:
+/// in the move's loop GCC cannot prove the field's gathers apart from the
+/// stores (it gives up and stays scalar), in a loop that writes only these
+/// local arrays it can.
+struct FieldWind {
+    alignas(64) float x[flake_block];
+    alignas(64) float y[flake_block];
+    alignas(64) float z[flake_block];
+
+    FieldWind(const WindSampler& s, const float* __restrict px, const float* __restrict py,
+              const float* __restrict pz, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) {
+            s.at(px[i], py[i], pz[i], x[i], y[i], z[i]);
+        }
+    }
+    void at(std::size_t i, float& wx, float& wy, float& wz) const {
+        wx = x[i];
+        wy = y[i];
+        wz = z[i];
     }
 };
 
@@ -91,7 +114,7 @@ std::uint32_t guarded_lanes(float* __restrict sx, float* __restrict sy, float* _
         sz[i] = z0;
         float x = x0, y = y0, z = z0, u = u0, v = v0, s = s0;
         float wx, wy, wz;
-        air.at(x0, y0, z0, wx, wy, wz);
+        air.at(i, wx, wy, wz);
         rule(x, u, c, q.g.x, wx, q.dt);
         rule(y, v, c, q.g.y, wy, q.dt);
         rule(z, s, c, q.g.z, wz, q.dt);
@@ -129,7 +152,7 @@ void exact_pass(const Lanes& l, std::size_t n, const Params& q, const Air& air, 
             continue;
         }
         float wx, wy, wz;
-        air.at(l.px[i], l.py[i], l.pz[i], wx, wy, wz);
+        air.at(i, wx, wy, wz); // the slot has not moved: its start
         integrate::exponential(l.px[i], l.vx[i], c, q.g.x, wx, q.dt);
         integrate::exponential(l.py[i], l.vy[i], c, q.g.y, wy, q.dt);
         integrate::exponential(l.pz[i], l.vz[i], c, q.g.z, wz, q.dt);
@@ -212,9 +235,11 @@ void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts
     const std::size_t o = b - starts.base;
     const Lanes l{starts.x + o, starts.y + o, starts.z + o, a.px + b,  a.py + b,  a.pz + b,
                   a.vx + b,     a.vy + b,     a.vz + b,     a.kom + b, a.mass + b};
+    const std::size_t n = e - b;
     const std::uint32_t stiff =
-        t.field != nullptr ? integrate_lanes(t, t.field->sampler(), l, e - b)
-                           : integrate_lanes(t, GlobalWind{t.q.w.x, t.q.w.y, t.q.w.z}, l, e - b);
+        t.field != nullptr
+            ? integrate_lanes(t, FieldWind(t.field->sampler(), l.px, l.py, l.pz, n), l, n)
+            : integrate_lanes(t, GlobalWind{t.q.w.x, t.q.w.y, t.q.w.z}, l, n);
     t.stiff[chunk] += stiff;
 }
 
