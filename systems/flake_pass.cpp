@@ -85,32 +85,37 @@ void flake_pass_system(World& w) {
     }
 }
 
-void integrate_system(World& w) {
+namespace {
+
+/// One stage over the whole pool on its own, with pool-wide path starts;
+/// nothing when begin gave no tick (deposit without surfaces or flakes).
+template <typename Tick, typename Block>
+void run_alone(World& w, const Tick* t, const Block& block, void (*end)(World&, const Tick&)) {
+    if (t == nullptr) {
+        return;
+    }
     const PathStarts starts = stage_path_starts(w);
-    const IntegrateTick& t = integrate_begin(w);
     for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
-        integrate_block(t, chunk, starts, b, e);
+        block(*t, chunk, starts, b, e);
     });
-    integrate_end(w, t);
+    end(w, *t);
+}
+
+} // namespace
+
+void integrate_system(World& w) {
+    run_alone(w, &integrate_begin(w), integrate_block, integrate_end);
 }
 
 void collide_system(World& w) {
-    const PathStarts starts = stage_path_starts(w);
-    const CollideTick& t = collide_begin(w);
-    for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
-        collide_block(t, chunk, starts, b, e);
-    });
-    collide_end(w, t);
+    run_alone(w, &collide_begin(w), collide_block, collide_end);
 }
 
 void deposit_system(World& w) {
-    const PathStarts starts = stage_path_starts(w);
-    if (const DepositTick* t = deposit_begin(w)) {
-        for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
-            deposit_block(*t, chunk, starts, b, e, {});
-        });
-        deposit_end(w, *t);
-    }
+    const auto all = [](const DepositTick& t, std::size_t chunk, const PathStarts& starts,
+                        std::size_t b,
+                        std::size_t e) { deposit_block(t, chunk, starts, b, e, {}); };
+    run_alone(w, deposit_begin(w), all, deposit_end);
 }
 
 } // namespace snow
