@@ -391,12 +391,15 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
 /// number of sweeps, which carry information a few cells each, cannot clear).
 void shift(WindField& f, const glm::vec3& change) {
     for (int a = 0; a < 3; ++a) {
-        if (change[a] == 0.0f) {
+        // A copy: through the reference every store could change it, and
+        // the loop would not vectorise.
+        const float by = change[a];
+        if (by == 0.0f) {
             continue;
         }
         for (std::vector<float>* v : {&f.velocity[a], &f.at_centre[a]}) {
             for (float& x : *v) {
-                x += change[a];
+                x += by;
             }
         }
     }
