@@ -83,8 +83,8 @@ struct WindySquare {
 
     static SimConfig config(std::uint32_t side) {
         SimConfig c;
-        c.bounds = {{0.0f, 0.0f, 0.0f}, {0.1f * static_cast<float>(side), 2.0f,
-                                         0.1f * static_cast<float>(side)}};
+        c.bounds = {{0.0f, 0.0f, 0.0f},
+                    {0.1f * static_cast<float>(side), 2.0f, 0.1f * static_cast<float>(side)}};
         return c;
     }
 

@@ -22,8 +22,7 @@ void WindFieldPass::run(const World& world, FrameContext& frame) {
                               reinterpret_cast<const void*>(3 * sizeof(float)));
         attributes_set_ = true;
     }
-    glBufferData(GL_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(arrows_.vertices.size() * sizeof(float)),
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(arrows_.vertices.size() * sizeof(float)),
                  arrows_.vertices.data(), GL_STREAM_DRAW);
     frame.programs.get("wind_field.vert", "wind_field.frag", {}).use();
     // Hidden behind what is solid, drawn over the (depth-less) flakes and fog.

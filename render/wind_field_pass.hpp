@@ -1,8 +1,8 @@
 /// @file wind_field_pass.hpp
 /// @brief The wind field drawn as arrows (wind_arrows.hpp), after every
 /// other pass and hidden only by solid geometry, when
-/// RenderSettings::show_wind_field is on and the world has a WindField. A debugging view of the air the buildings shape; it reads the
-/// field and changes nothing.
+/// RenderSettings::show_wind_field is on and the world has a WindField. A debugging view of the air
+/// the buildings shape; it reads the field and changes nothing.
 #pragma once
 
 #include "render/gl_objects.hpp"

@@ -190,8 +190,8 @@ void diffuse(const WindField& f, int a, std::vector<float>& v, std::vector<float
         const auto keep = [&](std::int32_t from, std::int32_t count) {
             std::copy(s + from, s + from + count, d + from);
         };
-        keep(0, sz);                // the first plane
-        keep(last_z * sz, sz);      // the last
+        keep(0, sz);           // the first plane
+        keep(last_z * sz, sz); // the last
         for (std::int32_t k = 1; k < last_z; ++k) {
             keep(l.index(0, 0, k), sy);      // its first row
             keep(l.index(0, last_y, k), sy); // its last

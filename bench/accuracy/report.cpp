@@ -525,9 +525,9 @@ void wind_field_tables(OutFile& md, const StudyResults& r) {
              ref.field_ms_per_tick, ref.cpu_ms_per_tick,
              ref.free_speed > 0.0 ? ref.lee_speed / ref.free_speed : 0.0,
              static_cast<unsigned long long>(ref.lee_units));
-    const std::vector<std::string> cols{"cells",        "update_every", "total",
+    const std::vector<std::string> cols{"cells",         "update_every",       "total",
                                         "field ms/tick", "field ms per sim s", "tick CPU ms",
-                                        "wind rel L1",  "lee / free",   "lee snow ÷ ref"};
+                                        "wind rel L1",   "lee / free",         "lee snow ÷ ref"};
     md.text("#### Resolution (update_every at the baseline)\n\n");
     table_head(md, cols, 1);
     for (const std::size_t i : w.cell_sweep) {

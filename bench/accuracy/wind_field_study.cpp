@@ -8,6 +8,7 @@
 
 #include "bench/accuracy/cpu_clock.hpp"
 #include "game/scene/scene_loader.hpp"
+#include "systems/ground_snow.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/systems.hpp"
 
@@ -51,27 +52,6 @@ Probes make_probes() {
         p.at.push_back({-9.5f, 1.5f, z}); // upwind of the fence, at the inflow
     }
     return p;
-}
-
-/// Settled units on the scene's ground surfaces (those on no solid) in the lee strip.
-std::uint64_t lee_units(const Simulation& sim) {
-    std::uint64_t units = 0;
-    sim.world().each<SnowSurface, SurfaceOf>(
-        [&](Entity, const SnowSurface& s, const SurfaceOf& of) {
-            if (!of.owner.is_null()) {
-                return;
-            }
-            for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
-                const float z = s.z0 + (static_cast<float>(iz) + 0.5f) * s.cell;
-                for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
-                    const float x = s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell;
-                    if (x > lee_x0 && x < lee_x1 && z > lee_z0 && z < lee_z1) {
-                        units += s.snow[s.index(ix, iz)];
-                    }
-                }
-            }
-        });
-    return units;
 }
 
 /// CPU ms per tick of the wind_field system alone: 16 steps' worth of calls
@@ -143,7 +123,7 @@ Run run_field(const WindFieldStudyOptions& o, const WindFieldKnobs& k, const Pro
     };
     r.point.lee_speed = mean_speed(probes.lee_begin, probes.free_begin);
     r.point.free_speed = mean_speed(probes.free_begin, probes.at.size());
-    r.point.lee_units = lee_units(sim);
+    r.point.lee_units = ground_units_in(sim.world(), {lee_x0, lee_z0, lee_x1, lee_z1});
     return r;
 }
 

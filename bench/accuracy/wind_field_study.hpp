@@ -14,7 +14,7 @@ namespace snow::accuracy {
 
 /// What the wind-field study varies.
 struct WindFieldKnobs {
-    float cell_scale = 1.0f;       ///< cells per axis × 64 × 16 × 64
+    float cell_scale = 1.0f;        ///< cells per axis × 64 × 16 × 64
     std::uint32_t update_every = 4; ///< ticks between solver steps
 
     bool operator==(const WindFieldKnobs&) const = default;
