@@ -276,6 +276,16 @@ void Game::apply(Action a) {
             say("fog on");
         }
         break;
+    case Action::toggle_wind: {
+        bool& shown = renderer_->settings().show_wind_field;
+        if (!w.has_resource<WindField>()) {
+            say("this scene declares no wind field");
+        } else {
+            shown = !shown;
+            say(shown ? "wind field arrows on (blue still, red fastest)" : "wind field arrows off");
+        }
+        break;
+    }
     case Action::quality_next:
         quality_ = (quality_ + 1) % quality_presets.size();
         if (load()) {

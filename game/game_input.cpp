@@ -16,24 +16,16 @@ struct Binding {
     Action action;
 };
 
-constexpr std::array<Binding, 18> bindings{{
-    {"P", GLFW_KEY_P, Action::pause},
-    {"N", GLFW_KEY_N, Action::step},
-    {"R", GLFW_KEY_R, Action::reset},
-    {"+", GLFW_KEY_EQUAL, Action::rate_up},
-    {"+", GLFW_KEY_KP_ADD, Action::rate_up},
-    {"-", GLFW_KEY_MINUS, Action::rate_down},
-    {"LEFT", GLFW_KEY_LEFT, Action::wind_left},
-    {"RIGHT", GLFW_KEY_RIGHT, Action::wind_right},
-    {"UP", GLFW_KEY_UP, Action::wind_up},
-    {"DOWN", GLFW_KEY_DOWN, Action::wind_down},
-    {"F", GLFW_KEY_F, Action::toggle_fog},
-    {"Q", GLFW_KEY_Q, Action::quality_next},
-    {"C", GLFW_KEY_C, Action::screenshot},
-    {"O", GLFW_KEY_O, Action::next_camera},
-    {"T", GLFW_KEY_T, Action::time_scale},
-    {"B", GLFW_KEY_B, Action::push_snowball},
-    {"H", GLFW_KEY_H, Action::toggle_help},
+constexpr std::array<Binding, 19> bindings{{
+    {"P", GLFW_KEY_P, Action::pause},           {"N", GLFW_KEY_N, Action::step},
+    {"R", GLFW_KEY_R, Action::reset},           {"+", GLFW_KEY_EQUAL, Action::rate_up},
+    {"+", GLFW_KEY_KP_ADD, Action::rate_up},    {"-", GLFW_KEY_MINUS, Action::rate_down},
+    {"LEFT", GLFW_KEY_LEFT, Action::wind_left}, {"RIGHT", GLFW_KEY_RIGHT, Action::wind_right},
+    {"UP", GLFW_KEY_UP, Action::wind_up},       {"DOWN", GLFW_KEY_DOWN, Action::wind_down},
+    {"F", GLFW_KEY_F, Action::toggle_fog},      {"V", GLFW_KEY_V, Action::toggle_wind},
+    {"Q", GLFW_KEY_Q, Action::quality_next},    {"C", GLFW_KEY_C, Action::screenshot},
+    {"O", GLFW_KEY_O, Action::next_camera},     {"T", GLFW_KEY_T, Action::time_scale},
+    {"B", GLFW_KEY_B, Action::push_snowball},   {"H", GLFW_KEY_H, Action::toggle_help},
     {"ESC", GLFW_KEY_ESCAPE, Action::quit},
 }};
 
@@ -50,7 +42,7 @@ constexpr std::array<MoveBinding, move_key_count> move_bindings{{
     {"D", GLFW_KEY_D},
 }};
 
-constexpr const char* key_list = "P N R + - LEFT RIGHT UP DOWN F Q C O T B H ESC, held: W A S D";
+constexpr const char* key_list = "P N R + - LEFT RIGHT UP DOWN F V Q C O T B H ESC, held: W A S D";
 
 /// Whole-string unsigned number, or nothing.
 std::optional<std::uint64_t> whole_number(std::string_view text) {
@@ -122,6 +114,7 @@ const std::vector<KeyHelp>& key_help() {
         {"Left / Right", "rotate the wind"},
         {"Up / Down", "stronger / weaker wind"},
         {"F", "fog on / off"},
+        {"V", "wind field arrows on / off (blue still, red fastest)"},
         {"Q", "next quality preset"},
         {"C or F12", "screenshot (PNG)"},
         {"H", "this help"},

@@ -23,6 +23,7 @@ enum class Action : std::uint8_t {
     wind_up,       ///< up arrow: stronger wind
     wind_down,     ///< down arrow: weaker wind
     toggle_fog,    ///< F: fog on / off
+    toggle_wind,   ///< V: draw the wind field as arrows, on / off
     quality_next,  ///< Q: next quality preset (reloads the scene)
     screenshot,    ///< F12 or C: write a PNG
     next_camera,   ///< O: walk -> fly -> orbit camera
@@ -70,7 +71,7 @@ struct KeyScript {
 };
 
 /// Parses "ITEM,ITEM,..." with ITEM either FRAME:KEY (a press; KEY one of P
-/// N R + - LEFT RIGHT UP DOWN F Q C O T B H ESC) or FRAME:MOVE[:FRAMES] (W A
+/// N R + - LEFT RIGHT UP DOWN F V Q C O T B H ESC) or FRAME:MOVE[:FRAMES] (W A
 /// S D held for FRAMES frames, default 1). Throws std::invalid_argument
 /// naming the bad item; a list or item naming no key is an error.
 [[nodiscard]] KeyScript parse_key_script(std::string_view text);

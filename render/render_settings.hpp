@@ -45,6 +45,9 @@ struct RenderSettings {
     /// Beyond this distance (m) only a fraction (lod_distance / d)² of flakes is drawn.
     float lod_distance = 12.0f;
 
+    /// Draw the world's wind field (if it has one) as arrows coloured by speed.
+    bool show_wind_field = false;
+
     /// glFinish after each pass so per-pass times include GPU work (slower).
     bool timing_mode = false;
 };

@@ -11,6 +11,7 @@
 #include "render/sky_pass.hpp"
 #include "render/spectral_pass.hpp"
 #include "render/surface_pass.hpp"
+#include "render/wind_field_pass.hpp"
 #include "systems/body.hpp"
 #include "systems/fog.hpp"
 #include "systems/occlusion.hpp"
@@ -185,9 +186,17 @@ void Renderer::Impl::add_effect_passes(const World& world) {
         });
         passes.insert(surfaces, std::make_unique<BodyPass>());
     }
+    const auto wind_arrows = std::find_if(passes.begin(), passes.end(), [](const auto& p) {
+        return p->name() == WindFieldPass::pass_name;
+    });
     const Fog* fog = world.try_resource<Fog>();
     if (fog != nullptr && !fog->puffs.empty() && !has_pass(FogPuffPass::pass_name)) {
-        passes.push_back(std::make_unique<FogPuffPass>()); // over everything, flakes included
+        // Over everything, flakes included; only the wind's arrows go after it.
+        passes.insert(wind_arrows, std::make_unique<FogPuffPass>());
+    }
+    if (settings.show_wind_field && world.has_resource<WindField>() &&
+        !has_pass(WindFieldPass::pass_name)) {
+        passes.push_back(std::make_unique<WindFieldPass>(settings)); // last: a view of the air
     }
 }
 

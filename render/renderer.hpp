@@ -29,6 +29,8 @@ namespace snow {
 ///   (far-field spectral snow [LZ]: insert_pass("flakes", ...))
 ///   "flakes"        FlakePool point sprites ([ZCL], [SKY])
 ///   (fog puffs [PE]: insert_pass("", ...) appends after "flakes")
+///   (the wind field's arrows: "wind_field", last, from the first frame with
+///    RenderSettings::show_wind_field on and a WindField in the world)
 class Renderer {
   public:
     /// Throws RenderError if the context lacks what the renderer needs.

@@ -173,29 +173,40 @@ Mixing mixing(const WindField& f, float dt) {
 
 /// v += ν·dt·∇²v on the faces with a neighbour on every side (the rest are
 /// reset or extrapolated anyway), in m.parts explicit parts [STAM §3.3 does
-/// this implicitly; within the limit explicit is cheaper].
+/// this implicitly; within the limit explicit is cheaper]. Each part writes
+/// `tmp` from v, copies the faces it does not update and swaps the two.
 void diffuse(const WindField& f, int a, std::vector<float>& v, std::vector<float>& tmp,
              const Mixing& m) {
     const Lattice l = f.face[a];
     const std::int32_t sy = l.stride(1), sz = l.stride(2);
     const float lx = m.weight[0], ly = m.weight[1], lz = m.weight[2];
     const float centre = 1.0f - 2.0f * (lx + ly + lz);
+    const std::int32_t last_x = l.dim[0] - 1, last_y = l.dim[1] - 1, last_z = l.dim[2] - 1;
     // Index 1 .. dim - 2 on every axis: the inner faces along the face axis,
     // the cells between the ghosts along the others.
     for (std::uint32_t part = 0; part < m.parts; ++part) {
-        tmp = v;
-        const float* s = tmp.data();
-        float* d = v.data();
-        for (std::int32_t k = 1; k < l.dim[2] - 1; ++k) {
-            for (std::int32_t j = 1; j < l.dim[1] - 1; ++j) {
+        const float* s = v.data();
+        float* d = tmp.data();
+        const auto keep = [&](std::int32_t from, std::int32_t count) {
+            std::copy(s + from, s + from + count, d + from);
+        };
+        keep(0, sz);           // the first plane
+        keep(last_z * sz, sz); // the last
+        for (std::int32_t k = 1; k < last_z; ++k) {
+            keep(l.index(0, 0, k), sy);      // its first row
+            keep(l.index(0, last_y, k), sy); // its last
+            for (std::int32_t j = 1; j < last_y; ++j) {
                 const std::int32_t row = l.index(0, j, k);
-                for (std::int32_t i = 1; i < l.dim[0] - 1; ++i) {
+                d[row] = s[row];
+                d[row + last_x] = s[row + last_x];
+                for (std::int32_t i = 1; i < last_x; ++i) {
                     const std::int32_t q = row + i;
                     d[q] = centre * s[q] + lx * (s[q - 1] + s[q + 1]) +
                            ly * (s[q - sy] + s[q + sy]) + lz * (s[q - sz] + s[q + sz]);
                 }
             }
         }
+        std::swap(v, tmp);
     }
 }
 
@@ -380,12 +391,15 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
 /// number of sweeps, which carry information a few cells each, cannot clear).
 void shift(WindField& f, const glm::vec3& change) {
     for (int a = 0; a < 3; ++a) {
-        if (change[a] == 0.0f) {
+        // A copy: through the reference every store could change it, and
+        // the loop would not vectorise.
+        const float by = change[a];
+        if (by == 0.0f) {
             continue;
         }
         for (std::vector<float>* v : {&f.velocity[a], &f.at_centre[a]}) {
             for (float& x : *v) {
-                x += change[a];
+                x += by;
             }
         }
     }

@@ -1,7 +1,8 @@
 // snow_accuracy: accuracy versus cost (issue #7). Measures the integrators on
 // closed-form trajectories and the village scene's depth field against a fine
 // reference while dt, cell size, smoothing iterations and occlusion resolution
-// vary; picks the quality presets from the Pareto front. scripts/accuracy.sh
+// vary; picks the quality presets from the Pareto front; and measures the wind
+// field's resolution and update interval against a fine field (issue #15). scripts/accuracy.sh
 // runs it and turns its output into docs/accuracy.md and plots.
 #include "bench/accuracy/report.hpp"
 
@@ -22,7 +23,8 @@ using namespace snow::accuracy;
 constexpr const char* usage = R"(usage: snow_accuracy [options]
   --scene FILE     glTF scene (default: assets/scenes/village.gltf of the source tree)
   --out DIR        where CSV, .dat and report.md go (default accuracy-out; created)
-  --seconds S      snowfall simulated by every scene run (default 60)
+  --seconds S      snowfall simulated by every scene run (default 60; the
+                   wind-field runs take at most 30)
   --block M        block edge in metres of the main depth error (default 2)
   --quick          a small plan that finishes in seconds (smoke test, not for docs)
   --help           this text
@@ -131,6 +133,21 @@ SceneStudyOptions scene_plan(const Args& a) {
     return o;
 }
 
+WindFieldStudyOptions wind_plan(const Args& a) {
+    WindFieldStudyOptions o;
+    o.scene = a.scene;
+    o.seconds = std::min(a.seconds, 30.0f);
+    o.warmup = o.seconds / 3.0f;
+    if (a.quick) {
+        o.seconds = std::min(a.seconds, 2.0f);
+        o.warmup = 1.0f;
+        o.reference = {1.0f, 4};
+        o.cell_scales = {0.5f};
+        o.update_everys = {8};
+    }
+    return o;
+}
+
 int run(const Args& a) {
     const auto start = std::chrono::steady_clock::now();
     std::filesystem::create_directories(a.out);
@@ -155,6 +172,10 @@ int run(const Args& a) {
     }
     r.front = pareto_front(r.scene, all);
     r.presets = pick_presets(r.scene, r.trajectory);
+    r.wind_options = wind_plan(a);
+    std::fprintf(stderr, "snow_accuracy: wind field, %.0f s per run\n",
+                 static_cast<double>(r.wind_options.seconds));
+    r.wind = run_wind_field_study(r.wind_options, stderr);
     r.seconds_total =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_results(a.out, r);

@@ -50,3 +50,13 @@ steps = '15 30 60 120 240'
 plot for [i=1:5] data.'/scene.dat' index 5 using 1:($4 == word(steps, i)+0 ? $3 : 1/0) with points pt 7 ps 1.2 lc i title 'grid, dt 1/'.word(steps, i), \
      for [i=1:5] data.'/scene.dat' index 0 using 1:($4 == word(steps, i)+0 ? $3 : 1/0) with points pt 5 ps 1.6 lc i title 'dt sweep, dt 1/'.word(steps, i), \
      noise_floor with lines dt 2 lc rgb '#0000cc' title 'noise floor'
+
+# 4. Wind field: error of the mean wind versus the field's cost.
+set output img.'/accuracy_wind_field.png'
+set title 'Wind field: time-mean wind near the ground against the fine field, versus its cost'
+set xlabel 'wind_field ms per simulated second (one thread)'
+set ylabel 'rel L1 of the mean wind'
+set logscale x
+set key outside right
+plot data.'/wind_field.dat' index 0 using 1:2:3 with labels offset 0,1 point pt 7 ps 1.4 lc rgb '#cc0000' title 'cells (update every 4)', \
+     data.'/wind_field.dat' index 1 using 1:2:3 with labels offset 0,-1 point pt 5 ps 1.4 lc rgb '#0000cc' title 'update_every (64×16×64)'

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -461,6 +462,85 @@ void preset_table(OutFile& md, const StudyResults& r) {
     }
 }
 
+void write_wind_field(const std::string& dir, const StudyResults& r) {
+    const WindFieldStudy& w = r.wind;
+    OutFile csv(dir + "/wind_field.csv");
+    csv.text("role,cells_x,cells_y,cells_z,update_every,cpu_ms_per_tick,field_ms_per_tick,"
+             "wind_rel_l1,lee_speed,free_speed,lee_units\n");
+    const auto row = [&](const char* role, const WindFieldPoint& p) {
+        csv.print("%s,%u,%u,%u,%u,%.5f,%.5f,%.5f,%.4f,%.4f,%llu\n", role, p.knobs.cells(0),
+                  p.knobs.cells(1), p.knobs.cells(2), p.knobs.update_every, p.cpu_ms_per_tick,
+                  p.field_ms_per_tick, p.wind_rel_l1, p.lee_speed, p.free_speed,
+                  static_cast<unsigned long long>(p.lee_units));
+    };
+    row("reference", w.reference);
+    for (const WindFieldPoint& p : w.points) {
+        row("study", p);
+    }
+    csv.close();
+    // gnuplot blocks: 0 cells, 1 update_every. Columns: field ms per
+    // simulated s, wind rel L1, label.
+    OutFile dat(dir + "/wind_field.dat");
+    const auto block = [&](const char* name, const std::vector<std::size_t>& idx, bool cells) {
+        dat.print("# %s: field_ms_per_sim_s wind_rel_l1 label\n", name);
+        for (const std::size_t i : idx) {
+            const WindFieldPoint& p = w.points[i];
+            if (cells) {
+                dat.print("%.4f %.5f %ux%ux%u\n", p.field_ms_per_second(w.dt), p.wind_rel_l1,
+                          p.knobs.cells(0), p.knobs.cells(1), p.knobs.cells(2));
+            } else {
+                dat.print("%.4f %.5f every_%u\n", p.field_ms_per_second(w.dt), p.wind_rel_l1,
+                          p.knobs.update_every);
+            }
+        }
+        dat.text("\n\n");
+    };
+    block("cells", w.cell_sweep, true);
+    block("update_every", w.update_sweep, false);
+    dat.close();
+}
+
+void wind_field_line(OutFile& md, const WindFieldPoint& p, float dt) {
+    md.print("| %u × %u × %u | %u | %llu | %.3f | %.2f | %.3f | %.3f | %.2f | %.2f |\n",
+             p.knobs.cells(0), p.knobs.cells(1), p.knobs.cells(2), p.knobs.update_every,
+             static_cast<unsigned long long>(p.knobs.total_cells()), p.field_ms_per_tick,
+             p.field_ms_per_second(dt), p.cpu_ms_per_tick, p.wind_rel_l1,
+             p.free_speed > 0.0 ? p.lee_speed / p.free_speed : 0.0, p.lee_units_ratio);
+}
+
+void wind_field_tables(OutFile& md, const StudyResults& r) {
+    const WindFieldStudy& w = r.wind;
+    const WindFieldStudyOptions& o = r.wind_options;
+    const WindFieldPoint& ref = w.reference;
+    md.print("### Setup of this run\n\n- Scene `%s` with a field declared on load, seed %llu, "
+             "%.0f s per run (the scene's snowfall and wind, walk included: the same seed "
+             "blows the same gusts in every run), one thread; time means over the %.0f s after "
+             "a %.0f s warm-up, sampled every 4 ticks.\n",
+             std::filesystem::path(o.scene).filename().c_str(),
+             static_cast<unsigned long long>(o.seed), static_cast<double>(o.seconds),
+             static_cast<double>(o.seconds - o.warmup), static_cast<double>(o.warmup));
+    md.print("- Reference: %u × %u × %u cells, update_every %u: field %.3f ms/tick, tick %.3f "
+             "CPU ms; lee / free stream %.2f, %llu units in the lee strip.\n\n",
+             ref.knobs.cells(0), ref.knobs.cells(1), ref.knobs.cells(2), ref.knobs.update_every,
+             ref.field_ms_per_tick, ref.cpu_ms_per_tick,
+             ref.free_speed > 0.0 ? ref.lee_speed / ref.free_speed : 0.0,
+             static_cast<unsigned long long>(ref.lee_units));
+    const std::vector<std::string> cols{"cells",         "update_every",       "total",
+                                        "field ms/tick", "field ms per sim s", "tick CPU ms",
+                                        "wind rel L1",   "lee / free",         "lee snow ÷ ref"};
+    md.text("#### Resolution (update_every at the baseline)\n\n");
+    table_head(md, cols, 1);
+    for (const std::size_t i : w.cell_sweep) {
+        wind_field_line(md, w.points[i], w.dt);
+    }
+    md.text("\n#### Update interval (cells at the baseline)\n\n");
+    table_head(md, cols, 1);
+    for (const std::size_t i : w.update_sweep) {
+        wind_field_line(md, w.points[i], w.dt);
+    }
+    md.text("\n![wind error versus field cost](img/accuracy_wind_field.png)\n\n");
+}
+
 void write_markdown(const std::string& dir, const StudyResults& r) {
     OutFile md(dir + "/report.md");
     md.text("## Results\n\n");
@@ -469,6 +549,8 @@ void write_markdown(const std::string& dir, const StudyResults& r) {
     trajectory_tables(md, r);
     md.text("## Scene level\n\n");
     scene_tables(md, r);
+    md.text("## Wind field\n\n");
+    wind_field_tables(md, r);
     md.print("The study took %.0f s of wall time.\n", r.seconds_total);
     md.close();
 }
@@ -478,6 +560,7 @@ void write_markdown(const std::string& dir, const StudyResults& r) {
 void write_results(const std::string& dir, const StudyResults& r) {
     write_trajectory(dir, r);
     write_scene(dir, r);
+    write_wind_field(dir, r);
     write_markdown(dir, r);
 }
 

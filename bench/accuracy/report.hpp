@@ -6,6 +6,7 @@
 #include "bench/accuracy/pareto.hpp"
 #include "bench/accuracy/scene_study.hpp"
 #include "bench/accuracy/trajectory_study.hpp"
+#include "bench/accuracy/wind_field_study.hpp"
 
 #include <string>
 #include <vector>
@@ -23,11 +24,14 @@ struct StudyResults {
     SceneStudy scene;
     std::vector<std::size_t> front; ///< over all studied settings
     std::vector<PresetPick> presets;
+    WindFieldStudyOptions wind_options;
+    WindFieldStudy wind;
     double seconds_total = 0.0; ///< wall time of the whole study
 };
 
 /// trajectory.csv, trajectory_<integrator>.dat (one per integrator, for
-/// gnuplot), scene.csv, front.dat and report.md in `dir` (which must exist).
+/// gnuplot), scene.csv, scene.dat, floor.gp, wind_field.csv, wind_field.dat
+/// and report.md in `dir` (which must exist).
 /// Throws std::runtime_error naming a file that cannot be written.
 void write_results(const std::string& dir, const StudyResults& r);
 

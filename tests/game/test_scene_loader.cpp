@@ -174,7 +174,7 @@ TEST(SceneLoader, MinimalSceneCreatesOnlyWhatItDeclares) {
     EXPECT_EQ(r.sim->nonfinite_count(), 0u);
 }
 
-TEST(SceneLoader, VillageEffectsAddsSpectralLayeredFogAndGusts) {
+TEST(SceneLoader, VillageEffectsAddsSpectralLayeredFogGustsAndAWindField) {
     const SceneLoadResult r = load_scene_file(asset_path("village_effects.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
     const World& w = r.sim->world();
@@ -185,6 +185,15 @@ TEST(SceneLoader, VillageEffectsAddsSpectralLayeredFogAndGusts) {
     ASSERT_EQ(w.resource<Fog>().puffs.size(), 1u);
     EXPECT_FLOAT_EQ(w.resource<Fog>().puffs[0].sigma, 1.5f);
     EXPECT_FLOAT_EQ(w.resource<Wind>().gust_strength, 3.0f);
+    // The buildings shape the wind, and the wind moves snow (docs/wind_field.md).
+    ASSERT_TRUE(w.has_resource<WindField>());
+    const WindField& f = w.resource<WindField>();
+    EXPECT_EQ(f.n[0], 64u);
+    EXPECT_EQ(f.n[1], 16u);
+    EXPECT_EQ(f.n[2], 64u);
+    EXPECT_EQ(f.def.update_every, 4u);
+    ASSERT_TRUE(f.transport.has_value());
+    EXPECT_FLOAT_EQ(f.transport->threshold, 4.5f);
 }
 
 TEST(SceneLoader, MemoryLoadOfEmbeddedSceneMatchesFileLoad) {

@@ -181,6 +181,19 @@ TEST(SnowGame, DefaultCameraWalksWhereTheSceneHasSnowGround) {
     EXPECT_NE(plain.out.find("fly camera"), std::string::npos) << plain.out;
 }
 
+TEST(SnowGame, VDrawsTheWindFieldWhereTheSceneHasOne) {
+    const std::string out = " --out " + std::string(SNOW_BINARY_DIR) + "/test_out/game_wind";
+    const snow::test::AppRun effects =
+        run_game("MESA_SHADER_CACHE_DISABLE=true",
+                 "--headless --frames 2 --size 64x48 --inject 0:V --scene " +
+                     std::string(SNOW_SOURCE_DIR) + "/assets/scenes/village_effects.gltf" + out);
+    EXPECT_EQ(effects.status, 0) << effects.out;
+    EXPECT_NE(effects.out.find("wind field arrows on"), std::string::npos) << effects.out;
+    const snow::test::AppRun village = run_game(
+        "MESA_SHADER_CACHE_DISABLE=true", "--headless --frames 1 --size 64x48 --inject 0:V" + out);
+    EXPECT_NE(village.out.find("declares no wind field"), std::string::npos) << village.out;
+}
+
 TEST(SnowGame, BadArgumentsExitWithStatus2) {
     for (const char* bad : {"--bogus", "--frames 0", "--size 12", "--quality ultra", "--inject 3:Z",
                             "--inject 1:W:0", "--camera drone", "--time-scale 8", "--snowfall 0",

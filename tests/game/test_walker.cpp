@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -220,6 +221,16 @@ TEST(KeyScript, PressesAndHolds) {
     EXPECT_TRUE(k.held(MoveKey::right, 40));
     EXPECT_FALSE(k.held(MoveKey::right, 41));
     EXPECT_FALSE(k.held(MoveKey::left, 40));
+}
+
+TEST(KeyScript, VTogglesTheWindFieldArrowsAndIsInTheHelp) {
+    const KeyScript k = parse_key_script("5:V");
+    ASSERT_EQ(k.presses.size(), 1u);
+    EXPECT_EQ(k.presses[0].action, Action::toggle_wind);
+    const auto& help = key_help();
+    EXPECT_TRUE(std::any_of(help.begin(), help.end(), [](const KeyHelp& h) {
+        return std::string(h.key) == "V" && std::string(h.what).find("wind") != std::string::npos;
+    }));
 }
 
 TEST(KeyScript, BadItemsNameTheProblem) {

@@ -7,6 +7,7 @@
 #include "systems/simulation.hpp"
 #include "systems/wind_field_solver.hpp"
 #include "tests/support/share_work.hpp"
+#include "tests/support/steady_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,17 +28,7 @@ std::unique_ptr<Simulation> cube_in_wind(bool with_box, std::uint32_t update_eve
     if (with_box) {
         sim->add_box({{0.0f, 0.0f, -0.5f * cube}, {cube, cube, 0.5f * cube}});
     }
-    Wind wind;
-    wind.base = wind.current = {free_stream, 0.0f, 0.0f};
-    wind.walk = 0.0f;
-    wind.max_deviation = 0.0f;
-    sim->set_wind(wind);
-    WindFieldDef def;
-    def.cells_x = 96;
-    def.cells_y = 16;
-    def.cells_z = 48;
-    def.update_every = update_every;
-    sim->set_wind_field(def);
+    test::blow_steadily_through_field(*sim, free_stream, {96, 16, 48, update_every});
     return sim;
 }
 

@@ -5,6 +5,7 @@
 #include "systems/sample_scenes.hpp"
 #include "systems/simulation.hpp"
 #include "tests/support/snapshot_check.hpp"
+#include "tests/support/steady_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,17 +27,7 @@ std::unique_ptr<Simulation> snowy_patch(float speed, bool raised, unsigned threa
     cfg.max_flakes = 200000;
     cfg.threads = threads;
     auto sim = std::make_unique<Simulation>(cfg);
-    Wind wind;
-    wind.base = wind.current = {speed, 0.0f, 0.0f};
-    wind.walk = 0.0f;
-    wind.max_deviation = 0.0f;
-    sim->set_wind(wind);
-    WindFieldDef field;
-    field.cells_x = 48;
-    field.cells_y = 8;
-    field.cells_z = 16;
-    field.update_every = 2;
-    sim->set_wind_field(field);
+    test::blow_steadily_through_field(*sim, speed, {48, 8, 16, 2});
     SurfaceDef patch;
     patch.x0 = -2.0f;
     patch.z0 = -1.0f;
