@@ -28,23 +28,6 @@ void for_blocks(World& w, const Fn& fn) {
     });
 }
 
-/// Asks for the cache lines of slots [b, e) of the arrays a pass reads and
-/// writes. Issued for the next block before the stages work on this one, so
-/// the memory fetches overlap the collide and deposit tests, which compute
-/// from L1 only (without it the two alternate: at 1M flakes the pass waited
-/// for memory and then computed, one after the other).
-void prefetch_block(const FlakePool& f, std::size_t b, std::size_t e) {
-    constexpr std::size_t per_line = 64 / sizeof(float);
-    for (std::size_t i = b; i < e; i += per_line) {
-        for (const float* a :
-             {f.px.data(), f.py.data(), f.pz.data(), f.vx.data(), f.vy.data(), f.vz.data()}) {
-            __builtin_prefetch(a + i, 1);
-        }
-        __builtin_prefetch(f.k_over_m.data() + i, 0);
-        __builtin_prefetch(f.mass_units.data() + i, 0);
-    }
-}
-
 } // namespace
 
 PathStarts stage_path_starts(World& w) {
@@ -67,9 +50,7 @@ void flake_pass_system(World& w) {
     // Nothing can land without a surface: that stage is skipped (as its own
     // system it needs a SnowSurface; docs/design.md "What is declared runs").
     const DepositTick* de = deposit_begin(w);
-    const FlakePool& pool = w.resource<FlakePool>();
     for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
-        prefetch_block(pool, e, std::min<std::size_t>(e + flake_block, pool.slot_end));
         alignas(64) float x[flake_block], y[flake_block], z[flake_block];
         const PathStarts starts{x, y, z, b};
         integrate_block(in, chunk, starts, b, e);
