@@ -147,6 +147,10 @@ void apply(SnowSurface& s, const std::vector<Move>& moves, FlakePool& pool, floa
         }
         s.snow[m.from] += m.units - arrived;
     }
+    // Once every move arrived: a source keeps the compaction its units still hold.
+    for (const Move& m : moves) {
+        s.fit_compaction(m.from);
+    }
 }
 
 } // namespace

@@ -26,6 +26,7 @@ struct NodeSnow {
     std::optional<BodyMotion> motion;
     bool snowball = false;  ///< a moving sphere that picks up snow
     bool on_ground = false; ///< the body stands on the bare ground under it
+    float compaction = 0.0f; ///< the body packs this fraction of the snow in its way
 };
 
 /// A node whose collider moves (a path, a snowball, or a capsule) is a body.

@@ -73,10 +73,9 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
     SnowyYard y;
     Walker w(y.sim, {-2.0f, 5.0f, 0.0f});
     y.walk(w, {0.0f, 0.0f}, 1);
-    // It stands on the bare ground, its round bottom a little below it (the tread).
+    // It stands on the bare ground, its flat soles on it.
     const float lowest = y.sim.body(w.body()).position.y - 0.25f - 0.6f;
-    EXPECT_LT(lowest, -0.05f);
-    EXPECT_GT(lowest, -0.1f);
+    EXPECT_NEAR(lowest, 0.0f, 1.0e-6f);
     const std::uint64_t settled = y.sim.mass().settled;
     y.walk(w, {1.0f, 0.0f}, 150); // 1.4 m/s for 2.5 s: 3.5 m along +x
     const glm::vec3 p = y.sim.body(w.body()).position;
@@ -85,6 +84,9 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
     EXPECT_EQ(y.sim.mass().settled, settled) << "snow pushed aside, none lost";
     for (const float x : {-1.5f, -1.0f, -0.5f, 0.0f, 0.5f}) {
         EXPECT_LT(y.depth(x, 0.0f), 0.25f * y.depth(x, 1.0f)) << "trench floor at x " << x;
+        // As wide as the capsule: cleared to within a cell of its 0.25 m radius.
+        EXPECT_LT(y.depth(x, 0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
+        EXPECT_LT(y.depth(x, -0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
         EXPECT_NEAR(y.depth(x, 1.0f), 0.02f, 0.002f) << "untouched 1 m beside it";
     }
     const TrailReport t = w.trail(y.sim);
