@@ -190,7 +190,7 @@ void raise_rims(SnowSurface& s, const CarveScratch& scratch, std::uint64_t units
     for (std::uint64_t k = 0; k < n; ++k) {
         const std::uint32_t c = scratch.ring[k];
         s.snow[c] += static_cast<std::uint32_t>(units / n + (k < units % n ? 1 : 0));
-        s.mark_dirty(c % s.nx, c / s.nx);
+        s.mark_dirty(c);
     }
 }
 

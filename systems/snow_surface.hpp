@@ -158,6 +158,10 @@ struct SnowSurface {
     /// Records that cell (ix, iz) changed: grows its tile's dirty box, the
     /// dirty rectangle and level_bound.
     void mark_dirty(std::uint32_t ix, std::uint32_t iz);
+    /// The same for cell index i.
+    void mark_dirty(std::size_t i) {
+        mark_dirty(static_cast<std::uint32_t>(i % nx), static_cast<std::uint32_t>(i / nx));
+    }
     /// Forgets every dirty cell (redistribution took them over).
     void clear_dirty();
     [[nodiscard]] std::uint32_t tiles_x() const {

@@ -191,7 +191,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         }
         if (role.compaction != 0.0f && !is_body(role)) {
             scene_fail(path + ".compaction",
-                       "only a moving body (a motion, a snowball or a capsule) compacts snow");
+                       "is for moving bodies only (a motion, a snowball or a capsule)");
         }
         if (role.collider == ColliderKind::mesh && is_body(role)) {
             scene_fail(path + ".collider", "a moving body must be a sphere, box or capsule");
