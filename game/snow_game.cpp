@@ -32,7 +32,7 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
                       --frames 120 --size 640x360 --quality low --time-scale 64
                       --snowfall 40000 --max-flakes 400000 --camera fly
                       --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
-                      --min-snow-depth 0.015 --out out/timelapse (flags after it
+                      --min-snow-depth 0.008 --out out/timelapse (flags after it
                       override these)
 )";
 constexpr const char* usage_tail =
