@@ -176,8 +176,7 @@ void Walker::roll_snowball(Simulation& sim) {
     v *= std::max(0.0f, 1.0f - s_.ball_friction * dt);
     const glm::vec2 from = xz(ball.position);
     const glm::vec2 step = v * dt;
-    if (glm::length(v) < 0.05f ||
-        free_move(sim.world(), ball, from, step) != from + step) {
+    if (glm::length(v) < 0.05f || free_move(sim.world(), ball, from, step) != from + step) {
         v = glm::vec2(0.0f); // stopped by friction, a wall or the end of the snow
     }
     sim.set_body_velocity(ball_, {v.x, 0.0f, v.y});

@@ -150,8 +150,7 @@ std::uint64_t take_footprint(SnowSurface& s, const CellBox& box, const CarveScra
             const std::size_t k = static_cast<std::size_t>(j) * w + i;
             const std::size_t c = s.index(box.x0 + i, box.z0 + j);
             if (scratch.mask[k] != 0 && s.snow[c] != 0 &&
-                lower_cell(s, c, std::max(s.base_level[c], scratch.floor[k]), compaction,
-                           taken)) {
+                lower_cell(s, c, std::max(s.base_level[c], scratch.floor[k]), compaction, taken)) {
                 s.mark_dirty(box.x0 + i, box.z0 + j);
             }
         }

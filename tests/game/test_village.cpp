@@ -66,10 +66,9 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
     double on = 0.0, beside = 0.0;
     for (float s = 0.5f; s < 3.6f; s += 0.25f) {
         const float along_x = -1.0f + 1.5f * s, along_z = 2.5f + s;
-        for (const auto& [x, z, ox, oz] : {std::tuple{along_x, 2.5f, 0.0f, -1.0f},
-                                           std::tuple{along_x, 6.5f, 0.0f, 1.0f},
-                                           std::tuple{-1.0f, along_z, -1.0f, 0.0f},
-                                           std::tuple{5.0f, along_z, 1.0f, 0.0f}}) {
+        for (const auto& [x, z, ox, oz] :
+             {std::tuple{along_x, 2.5f, 0.0f, -1.0f}, std::tuple{along_x, 6.5f, 0.0f, 1.0f},
+              std::tuple{-1.0f, along_z, -1.0f, 0.0f}, std::tuple{5.0f, along_z, 1.0f, 0.0f}}) {
             on += ground_depth(sim, x, z);
             beside += ground_depth(sim, x + ox, z + oz);
         }

@@ -119,7 +119,8 @@ Entity add_roof(SnowyYard& y, float low, float high) {
     top.cell = cell;
     top.base_y = high;
     top.spills = false;
-    const Entity roof = y.sim.add_surface(top, y.sim.add_box({{-1.0f, low, -1.0f}, {1.0f, high, 1.0f}}));
+    const Entity roof =
+        y.sim.add_surface(top, y.sim.add_box({{-1.0f, low, -1.0f}, {1.0f, high, 1.0f}}));
     for (std::uint32_t iz = 0; iz < y.sim.surface(roof).nz; ++iz) {
         for (std::uint32_t ix = 0; ix < y.sim.surface(roof).nx; ++ix) {
             y.sim.add_settled_snow(roof, ix, iz, depth_units);

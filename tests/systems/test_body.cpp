@@ -274,8 +274,7 @@ TEST(Body, ACompactingBodyPacksTheSnowLowerWithTheSameUnits) {
     EXPECT_LT(pushed.depth, 0.005);
     EXPECT_GT(packed.units, 3 * pushed.units);
     EXPECT_NEAR(packed.depth, 0.01875, 0.003);
-    EXPECT_LT(packed.depth, 0.5 * static_cast<double>(packed.units) / 16 *
-                                packing.s().unit_height);
+    EXPECT_LT(packed.depth, 0.5 * static_cast<double>(packed.units) / 16 * packing.s().unit_height);
     // The rims beside it hold only the quarter it pushed aside.
     const std::uint32_t rim_plain = plain.at(-0.7f, 0.225f), rim_packed = packing.at(-0.7f, 0.225f);
     EXPECT_GT(rim_plain, rim_packed);
