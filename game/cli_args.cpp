@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace snow::cli {
@@ -84,6 +86,24 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
         return false;
     }
     return true;
+}
+
+bool read_shared(ArgReader& args, const Usage& usage, const SceneArgs& into) {
+    const std::string_view f = args.flag();
+    if (read_override(args, into.overrides)) {
+        return true;
+    }
+    if (f == "--help" || f == "-h") {
+        std::fputs(usage.head, stdout);
+        std::fputs(override_usage, stdout);
+        std::fputs(usage.tail, stdout);
+        std::exit(0);
+    }
+    if (f == "--scene") {
+        into.scene = std::string(args.value());
+        return true;
+    }
+    return false;
 }
 
 } // namespace snow::cli

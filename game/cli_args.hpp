@@ -57,4 +57,35 @@ inline constexpr const char* override_usage =
 /// and returns true; false for any other flag. Throws UsageError on a bad value.
 [[nodiscard]] bool read_override(ArgReader& args, SceneOverrides& o);
 
+/// An app's usage text: its own lines before and after override_usage.
+struct Usage {
+    const char* head;
+    const char* tail;
+};
+
+/// What both apps read alike: the scene file and the overrides.
+struct SceneArgs {
+    std::optional<std::string>& scene;
+    SceneOverrides& overrides;
+};
+
+/// If the current flag is one both apps take (override_usage's, --scene
+/// FILE, --help or -h: prints `usage` and exits 0), reads it into `into` and
+/// returns true; false for any other flag.
+[[nodiscard]] bool read_shared(ArgReader& args, const Usage& usage, const SceneArgs& into);
+
+/// Reads the whole command line: the flags both apps take into `into`, every
+/// other flag by `own(flag, args)`, which returns false for one it does not
+/// know (a UsageError naming it).
+template <typename Own>
+void read_command_line(int argc, char** argv, const Usage& usage, const SceneArgs& into,
+                       Own&& own) {
+    ArgReader args(argc, argv);
+    while (args.next()) {
+        if (!read_shared(args, usage, into) && !own(args.flag(), args)) {
+            args.unknown();
+        }
+    }
+}
+
 } // namespace snow::cli

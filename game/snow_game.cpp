@@ -32,7 +32,7 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
                       --frames 120 --size 640x360 --quality low --time-scale 64
                       --snowfall 40000 --max-flakes 400000 --camera fly
                       --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
-                      --min-snow-depth 0.015 --out out/timelapse (flags after it
+                      --min-snow-depth 0.008 --out out/timelapse (flags after it
                       override these)
 )";
 constexpr const char* usage_tail =
@@ -43,87 +43,79 @@ constexpr const char* usage_tail =
 In the window press H for the key list.
 )";
 
-snow::GameOptions parse(int argc, char** argv) {
+/// Reads one of snow_game's own flags into `o`; false for a flag it does not take.
+bool read_flag(std::string_view f, snow::cli::ArgReader& args, snow::GameOptions& o) {
     using namespace snow::cli;
-    snow::GameOptions o;
-    ArgReader args(argc, argv);
-    while (args.next()) {
-        const std::string_view f = args.flag();
-        if (read_override(args, o.overrides)) {
-            continue;
+    if (f == "--headless") {
+        o.headless = true;
+    } else if (f == "--frames") {
+        o.frames = parse_uint(f, args.value(), 1, 10'000'000);
+    } else if (f == "--out") {
+        o.out_dir = std::string(args.value());
+    } else if (f == "--seconds") {
+        o.seconds = parse_positive(f, args.value(), 1.0e7);
+    } else if (f == "--size") {
+        const std::string_view v = args.value();
+        const std::size_t x = v.find('x');
+        if (x == std::string_view::npos) {
+            throw UsageError{"--size: expected WxH, e.g. 1280x720, got '" + std::string(v) + "'"};
         }
-        if (f == "--help" || f == "-h") {
-            std::fputs(usage_head, stdout);
-            std::fputs(override_usage, stdout);
-            std::fputs(usage_tail, stdout);
-            std::exit(0);
-        } else if (f == "--scene") {
-            o.scene = std::string(args.value());
-        } else if (f == "--headless") {
-            o.headless = true;
-        } else if (f == "--frames") {
-            o.frames = parse_uint(f, args.value(), 1, 10'000'000);
-        } else if (f == "--out") {
-            o.out_dir = std::string(args.value());
-        } else if (f == "--seconds") {
-            o.seconds = parse_positive(f, args.value(), 1.0e7);
-        } else if (f == "--size") {
-            const std::string_view v = args.value();
-            const std::size_t x = v.find('x');
-            if (x == std::string_view::npos) {
-                throw UsageError{"--size: expected WxH, e.g. 1280x720, got '" + std::string(v) +
-                                 "'"};
-            }
-            o.width = static_cast<int>(parse_uint(f, v.substr(0, x), 16, 8192));
-            o.height = static_cast<int>(parse_uint(f, v.substr(x + 1), 16, 8192));
-        } else if (f == "--quality") {
-            const std::string_view q = args.value();
-            const auto i = snow::find_quality(q);
-            if (!i) {
-                throw UsageError{"--quality: expected low, medium or high, got '" + std::string(q) +
-                                 "'"};
-            }
-            o.quality = *i;
-        } else if (f == "--warmup") {
-            o.warmup_ticks = parse_uint(f, args.value(), 0, 100'000'000);
-        } else if (f == "--inject") {
-            try {
-                o.inject = snow::parse_key_script(args.value());
-            } catch (const std::invalid_argument& e) {
-                throw UsageError{e.what()};
-            }
-        } else if (f == "--video") {
-            o.video = true;
-        } else if (f == "--camera") {
-            const std::string_view m = args.value();
-            o.camera = snow::find_camera_mode(m);
-            if (!o.camera) {
-                throw UsageError{"--camera: expected walk, fly or orbit, got '" + std::string(m) +
-                                 "'"};
-            }
-        } else if (f == "--time-scale") {
-            const std::string_view v = args.value();
-            const auto n = static_cast<std::uint32_t>(parse_uint(f, v, 1, 64));
-            if (!snow::TimeScale().set(n)) {
-                throw UsageError{"--time-scale: expected 1, 4, 16 or 64, got " + std::string(v)};
-            }
-            o.time_scale = n;
-        } else if (f == "--snowfall") {
-            o.snowfall = static_cast<float>(parse_positive(f, args.value(), 1.0e6));
-        } else if (f == "--walk-once-at") {
-            o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
-        } else if (f == "--bare-meshes") {
-            o.bare_meshes = true;
-        } else if (f == "--min-snow-depth") {
-            o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
-        } else if (f == "--contact-sheet") {
-            o.contact_sheet = static_cast<std::uint32_t>(parse_uint(f, args.value(), 2, 16));
-        } else if (f == "--timelapse") {
-            snow::apply_timelapse(o);
-        } else {
-            args.unknown();
+        o.width = static_cast<int>(parse_uint(f, v.substr(0, x), 16, 8192));
+        o.height = static_cast<int>(parse_uint(f, v.substr(x + 1), 16, 8192));
+    } else if (f == "--quality") {
+        const std::string_view q = args.value();
+        const auto i = snow::find_quality(q);
+        if (!i) {
+            throw UsageError{"--quality: expected low, medium or high, got '" + std::string(q) +
+                             "'"};
         }
+        o.quality = *i;
+    } else if (f == "--warmup") {
+        o.warmup_ticks = parse_uint(f, args.value(), 0, 100'000'000);
+    } else if (f == "--inject") {
+        try {
+            o.inject = snow::parse_key_script(args.value());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError{e.what()};
+        }
+    } else if (f == "--video") {
+        o.video = true;
+    } else if (f == "--camera") {
+        const std::string_view m = args.value();
+        o.camera = snow::find_camera_mode(m);
+        if (!o.camera) {
+            throw UsageError{"--camera: expected walk, fly or orbit, got '" + std::string(m) + "'"};
+        }
+    } else if (f == "--time-scale") {
+        const std::string_view v = args.value();
+        const auto n = static_cast<std::uint32_t>(parse_uint(f, v, 1, 64));
+        if (!snow::TimeScale().set(n)) {
+            throw UsageError{"--time-scale: expected 1, 4, 16 or 64, got " + std::string(v)};
+        }
+        o.time_scale = n;
+    } else if (f == "--snowfall") {
+        o.snowfall = static_cast<float>(parse_positive(f, args.value(), 1.0e6));
+    } else if (f == "--walk-once-at") {
+        o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
+    } else if (f == "--bare-meshes") {
+        o.bare_meshes = true;
+    } else if (f == "--min-snow-depth") {
+        o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
+    } else if (f == "--contact-sheet") {
+        o.contact_sheet = static_cast<std::uint32_t>(parse_uint(f, args.value(), 2, 16));
+    } else if (f == "--timelapse") {
+        snow::apply_timelapse(o);
+    } else {
+        return false;
     }
+    return true;
+}
+
+snow::GameOptions parse(int argc, char** argv) {
+    snow::GameOptions o;
+    snow::cli::read_command_line(
+        argc, argv, {usage_head, usage_tail}, {o.scene, o.overrides},
+        [&](std::string_view f, snow::cli::ArgReader& args) { return read_flag(f, args, o); });
     return o;
 }
 

@@ -2,7 +2,7 @@
 
 namespace snow {
 
-std::optional<SnowColumn> snow_column(const World& world, float x, float z) {
+std::optional<SnowColumn> snow_column(const World& world, float x, float z, float below) {
     std::optional<SnowColumn> best;
     world.each<SnowSurface>([&](Entity, const SnowSurface& s) {
         std::uint32_t ix = 0, iz = 0;
@@ -11,9 +11,8 @@ std::optional<SnowColumn> snow_column(const World& world, float x, float z) {
         }
         const std::size_t i = s.index(ix, iz);
         const float base = s.height(s.base_level[i]);
-        if (!best || base > best->base) {
-            best = SnowColumn{base,
-                              static_cast<float>(s.snow[i] * static_cast<double>(s.unit_height))};
+        if (base <= below && (!best || base > best->base)) {
+            best = SnowColumn{base, s.depth(i)};
         }
     });
     return best;
@@ -32,14 +31,14 @@ const SnowSurface* ground_surface(const World& world) {
 }
 
 double mean_depth(const SnowSurface& s) {
-    std::uint64_t units = 0, cells = 0;
+    std::int64_t levels = 0, cells = 0;
     for (std::size_t i = 0; i < s.cell_count(); ++i) {
         if (!s.is_void(i)) {
-            units += s.snow[i];
+            levels += s.depth_levels(i);
             ++cells;
         }
     }
-    return cells > 0 ? static_cast<double>(units) * s.unit_height / static_cast<double>(cells)
+    return cells > 0 ? static_cast<double>(levels) * s.unit_height / static_cast<double>(cells)
                      : 0.0;
 }
 

@@ -38,40 +38,34 @@ struct Options {
     snow::SceneOverrides overrides;
 };
 
-Options parse(int argc, char** argv) {
+/// Reads one of snow_run's own flags into `o`; false for a flag it does not take.
+bool read_flag(std::string_view f, snow::cli::ArgReader& args, Options& o) {
     using namespace snow::cli;
-    Options o;
-    ArgReader args(argc, argv);
-    while (args.next()) {
-        const std::string_view f = args.flag();
-        if (read_override(args, o.overrides)) {
-            continue;
+    if (f == "--ticks") {
+        o.ticks = parse_uint(f, args.value(), 0, 1'000'000'000'000ull);
+    } else if (f == "--report") {
+        const std::string_view r = args.value();
+        if (r != "json" && r != "text") {
+            throw UsageError{"--report: expected json or text, got '" + std::string(r) + "'"};
         }
-        if (f == "--help" || f == "-h") {
-            std::fputs(usage_head, stdout);
-            std::fputs(override_usage, stdout);
-            std::fputs(usage_tail, stdout);
-            std::exit(0);
-        } else if (f == "--scene") {
-            o.scene = std::string(args.value());
-        } else if (f == "--ticks") {
-            o.ticks = parse_uint(f, args.value(), 0, 1'000'000'000'000ull);
-        } else if (f == "--report") {
-            const std::string_view r = args.value();
-            if (r != "json" && r != "text") {
-                throw UsageError{"--report: expected json or text, got '" + std::string(r) + "'"};
-            }
-            o.json = r == "json";
-        } else if (f == "--export" || f == "--export-depth") {
-            const std::string_view path = args.value();
-            if (path.empty()) {
-                throw UsageError{std::string(f) + ": expected a path"};
-            }
-            (f == "--export" ? o.export_glb : o.export_depth) = std::string(path);
-        } else {
-            args.unknown();
+        o.json = r == "json";
+    } else if (f == "--export" || f == "--export-depth") {
+        const std::string_view path = args.value();
+        if (path.empty()) {
+            throw UsageError{std::string(f) + ": expected a path"};
         }
+        (f == "--export" ? o.export_glb : o.export_depth) = std::string(path);
+    } else {
+        return false;
     }
+    return true;
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    snow::cli::read_command_line(
+        argc, argv, {usage_head, usage_tail}, {o.scene, o.overrides},
+        [&](std::string_view f, snow::cli::ArgReader& args) { return read_flag(f, args, o); });
     return o;
 }
 

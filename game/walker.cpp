@@ -1,5 +1,7 @@
 #include "game/walker.hpp"
 
+#include "systems/colliders.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -14,11 +16,62 @@ glm::vec2 xz(const glm::vec3& p) {
     return {p.x, p.z};
 }
 
+/// How far a body reaches below and above its centre.
+glm::vec2 extent(const Body& b) {
+    glm::vec2 e{0.0f};
+    (void)b.extent_at(0.0f, 0.0f, e.x, e.y); // the centre always lies in the footprint
+    return e;
+}
+
 /// Height (m) of a body's lowest point.
 float bottom(const Body& b) {
-    float depth = 0.0f;
-    (void)b.depth_below(0.0f, 0.0f, depth); // the centre always lies in the footprint
-    return b.position.y - depth;
+    return b.position.y - extent(b).x;
+}
+
+/// Height (m) of triangle t over (x, z), false when (x, z) lies outside its
+/// projection (or the triangle stands upright).
+bool height_over(const glm::vec3* t, float x, float z, float& y) {
+    const float ax = t[1].x - t[0].x, az = t[1].z - t[0].z;
+    const float bx = t[2].x - t[0].x, bz = t[2].z - t[0].z;
+    const float det = ax * bz - az * bx;
+    if (det == 0.0f) {
+        return false;
+    }
+    const float px = x - t[0].x, pz = z - t[0].z;
+    const float u = (px * bz - pz * bx) / det, v = (ax * pz - az * px) / det;
+    if (!(u >= 0.0f && v >= 0.0f && u + v <= 1.0f)) {
+        return false;
+    }
+    y = t[0].y + u * (t[1].y - t[0].y) + v * (t[2].y - t[0].y);
+    return true;
+}
+
+/// True when a solid fills some of the vertical span [lo, hi] over (x, z):
+/// a box or sphere there, or a mesh with a face in it or enclosing its top.
+bool solid_between(const World& w, float x, float z, float lo, float hi) {
+    bool hit = false;
+    w.each<BoxCollider>([&](Entity, const BoxCollider& c) {
+        const Aabb& b = c.box;
+        hit = hit || (x >= b.min.x && x <= b.max.x && z >= b.min.z && z <= b.max.z &&
+                      b.min.y < hi && b.max.y > lo);
+    });
+    w.each<SphereCollider>([&](Entity, const SphereCollider& s) {
+        const float dx = x - s.center.x, dz = z - s.center.z;
+        const float half = std::sqrt(std::max(s.radius * s.radius - dx * dx - dz * dz, 0.0f));
+        hit = hit || (half > 0.0f && s.center.y - half < hi && s.center.y + half > lo);
+    });
+    w.each<MeshCollider>([&](Entity, const MeshCollider& m) {
+        std::size_t above = 0; // faces over the span: odd means its top is inside
+        for (std::size_t k = 0; k + 2 < m.triangles.size() && !hit; k += 3) {
+            float y = 0.0f;
+            if (height_over(&m.triangles[k], x, z, y)) {
+                hit = y >= lo && y <= hi;
+                above += y > hi ? 1 : 0;
+            }
+        }
+        hit = hit || above % 2 == 1;
+    });
+    return hit;
 }
 
 std::string metres(float m) {
@@ -42,15 +95,13 @@ Walker::Walker(Simulation& sim, const glm::vec3& start, WalkerSettings settings)
     d.radius = s_.radius;
     d.half_height = s_.half_height;
     const auto column = snow_column(sim.world(), at.x, at.y);
-    d.position = {at.x, (column ? column->base : start.y) + s_.half_height + s_.radius - sink(),
-                  at.y};
+    d.position = {at.x, (column ? column->base : start.y) + s_.half_height + s_.radius, at.y};
     body_ = sim.add_body(d);
     trail_.push_back(at);
 }
 
-float Walker::sink() const {
-    const float t = std::min(s_.tread, s_.radius);
-    return s_.radius - std::sqrt(s_.radius * s_.radius - t * t);
+std::optional<SnowColumn> Walker::footing(const Simulation& sim, float x, float z) const {
+    return snow_column(sim.world(), x, z, bottom(sim.body(body_)) + s_.step);
 }
 
 bool Walker::alive(const Simulation& sim) const {
@@ -65,12 +116,16 @@ void Walker::restart(const Simulation& sim) {
     trail_.assign(1, xz(sim.body(body_).position));
 }
 
-glm::vec2 Walker::free_move(const World& w, float ground, float reach, const glm::vec2& from,
+glm::vec2 Walker::free_move(const World& w, const Body& b, const glm::vec2& from,
                             const glm::vec2& delta) const {
+    const float ground = bottom(b), top = b.position.y + extent(b).y;
     const auto free = [&](const glm::vec2& p) {
-        const auto c = snow_column(w, p.x, p.y);
-        return c && c->base <= ground + s_.step;
+        // Ground within a step, and no solid from there up to the body's top
+        // (a wall stops it; a roof higher than the body lets it under).
+        return snow_column(w, p.x, p.y, ground + s_.step) &&
+               !solid_between(w, p.x, p.y, ground + s_.step, top);
     };
+    const float reach = b.radius;
     for (const glm::vec2& d : {delta, glm::vec2(delta.x, 0.0f), glm::vec2(0.0f, delta.y)}) {
         // The centre and the body's front along each axis it moves on (the
         // scene's walls are boxes) must all find ground.
@@ -92,14 +147,13 @@ glm::vec2 Walker::free_move(const World& w, float ground, float reach, const glm
 void Walker::before_tick(Simulation& sim, const glm::vec2& direction) {
     const Body& b = sim.body(body_);
     const glm::vec2 from = xz(b.position);
-    const float ground = bottom(b) + sink();
-    const glm::vec2 to = direction == glm::vec2(0.0f)
-                             ? from
-                             : free_move(sim.world(), ground, b.radius, from,
-                                         direction * (s_.speed * sim.config().dt));
+    const glm::vec2 to =
+        direction == glm::vec2(0.0f)
+            ? from
+            : free_move(sim.world(), b, from, direction * (s_.speed * sim.config().dt));
     // Stand on the ground there (covers build their base in the first tick).
-    const auto column = snow_column(sim.world(), to.x, to.y);
-    const float y = column ? column->base + s_.half_height + s_.radius - sink() : b.position.y;
+    const auto column = footing(sim, to.x, to.y);
+    const float y = column ? column->base + s_.half_height + s_.radius : b.position.y;
     if (to != from || y != b.position.y) {
         sim.move_body(body_, {to.x, y, to.y});
     }
@@ -122,8 +176,7 @@ void Walker::roll_snowball(Simulation& sim) {
     v *= std::max(0.0f, 1.0f - s_.ball_friction * dt);
     const glm::vec2 from = xz(ball.position);
     const glm::vec2 step = v * dt;
-    if (glm::length(v) < 0.05f ||
-        free_move(sim.world(), bottom(ball), ball.radius, from, step) != from + step) {
+    if (glm::length(v) < 0.05f || free_move(sim.world(), ball, from, step) != from + step) {
         v = glm::vec2(0.0f); // stopped by friction, a wall or the end of the snow
     }
     sim.set_body_velocity(ball_, {v.x, 0.0f, v.y});
@@ -159,20 +212,20 @@ std::string Walker::push_snowball(Simulation& sim, const glm::vec2& facing) {
 
 glm::vec3 Walker::eye(const Simulation& sim) const {
     const Body& b = sim.body(body_);
-    const auto column = snow_column(sim.world(), b.position.x, b.position.z);
-    const float feet = column ? column->top() : bottom(b) + sink();
+    const auto column = footing(sim, b.position.x, b.position.z);
+    const float feet = column ? column->top() : bottom(b);
     return {b.position.x, feet + s_.eye_height, b.position.z};
 }
 
 float Walker::depth_under(const Simulation& sim) const {
     const Body& b = sim.body(body_);
-    const auto column = snow_column(sim.world(), b.position.x, b.position.z);
+    const auto column = footing(sim, b.position.x, b.position.z);
     return column ? column->depth : 0.0f;
 }
 
 float Walker::depth_ahead(const Simulation& sim, const glm::vec2& facing) const {
     const glm::vec2 at = xz(sim.body(body_).position) + facing;
-    const auto column = snow_column(sim.world(), at.x, at.y);
+    const auto column = footing(sim, at.x, at.y);
     return column ? column->depth : 0.0f;
 }
 
@@ -197,9 +250,9 @@ TrailReport Walker::trail(const Simulation& sim) const {
         for (float t = std::ceil(along / spacing) * spacing - along;
              t < length && along + t <= r.walked - 1.0f; t += spacing) {
             const glm::vec2 p = path[i] + d * (t / length);
-            const auto c = snow_column(sim.world(), p.x, p.y);
-            const auto l = snow_column(sim.world(), p.x + side.x, p.y + side.y);
-            const auto rt = snow_column(sim.world(), p.x - side.x, p.y - side.y);
+            const auto c = footing(sim, p.x, p.y);
+            const auto l = footing(sim, p.x + side.x, p.y + side.y);
+            const auto rt = footing(sim, p.x - side.x, p.y - side.y);
             if (c && l && rt) {
                 on += c->depth;
                 beside += 0.5 * (l->depth + rt->depth);

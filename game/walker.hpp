@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,14 +22,10 @@ struct WalkerSettings {
     float radius = 0.25f;     ///< capsule radius (m)
     float half_height = 0.6f; ///< capsule core half length (m): 1.7 m tall
     float eye_height = 1.6f;  ///< eye above the snow under the feet (m)
-    /// Half width (m) of the trench cleared down to the bare ground. A capsule
-    /// whose lowest point stood on the ground would clear only a strip
-    /// √(2·radius·depth) wide in thin snow (its round bottom), narrower than a
-    /// cell; the player's capsule therefore reaches this far below the ground
-    /// that its round bottom is this wide at ground level, as two boots are.
-    float tread = 0.18f;
-    float speed = 1.4f;         ///< walking speed (m/s)
-    float step = 0.35f;         ///< highest rise of bare ground it steps onto (m)
+    float speed = 1.4f;       ///< walking speed (m/s)
+    /// Highest rise of bare ground it steps onto (m); it stands on the highest
+    /// bare top at or below its feet plus this, so it walks under a roof.
+    float step = 0.35f;
     float ball_radius = 0.2f;   ///< a new snowball's bare radius (m)
     float push_speed = 2.0f;    ///< speed a push gives the snowball (m/s)
     float push_reach = 0.8f;    ///< gap (m) between player and ball within which B pushes
@@ -54,9 +51,10 @@ class Walker {
     /// Before one tick: walks along the horizontal `direction` (length <= 1)
     /// for that tick through move_body, unless the bare ground there rises
     /// more than a step (a wall, the snowman) or has no snow surface; slides
-    /// along the free axis when only one is blocked; stands it on the ground
-    /// (see `tread`). Slows and stops a rolling snowball the same way
-    /// (set_body_velocity).
+    /// along the free axis when only one is blocked; stands it on the ground,
+    /// its flat soles (Body::extent_at) on the bare top, so its footprint
+    /// clears a trench as wide as it is. Slows and stops a rolling snowball
+    /// the same way (set_body_velocity).
     void before_tick(Simulation& sim, const glm::vec2& direction);
     /// B: pushes the snowball away from the player when it is within reach,
     /// makes a snowball ahead (along `facing`) when there is none; says which.
@@ -76,12 +74,13 @@ class Walker {
     [[nodiscard]] TrailReport trail(const Simulation& sim) const;
 
   private:
-    /// Where a body `reach` wide standing on ground at height `ground` gets
-    /// from `from` by `delta`: the whole move, else along one axis, else nowhere.
-    [[nodiscard]] glm::vec2 free_move(const World& w, float ground, float reach,
-                                      const glm::vec2& from, const glm::vec2& delta) const;
-    /// How far the capsule's lowest point reaches below the ground (m).
-    [[nodiscard]] float sink() const;
+    /// Where body `b` (the player or its snowball), standing on its lowest
+    /// point, gets from `from` by `delta`: the whole move, else along one
+    /// axis, else nowhere.
+    [[nodiscard]] glm::vec2 free_move(const World& w, const Body& b, const glm::vec2& from,
+                                      const glm::vec2& delta) const;
+    /// The column under (x, z) it can stand on from where its feet are now.
+    [[nodiscard]] std::optional<SnowColumn> footing(const Simulation& sim, float x, float z) const;
     [[nodiscard]] bool ball_alive(const Simulation& sim) const;
     void roll_snowball(Simulation& sim);
 

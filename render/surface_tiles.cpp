@@ -65,7 +65,7 @@ struct ChecksumWeights {
 };
 constexpr ChecksumWeights checksum_weights;
 
-/// Checksum of the tile's snow and base levels (mod 2^64): per row a weighted
+/// Checksum of the tile's snow depth and base levels (mod 2^64): per row a weighted
 /// sum with odd weights (vectorises, no dependency chain), rows chained
 /// polynomially. One changed cell always changes it (an odd weight times a
 /// non-zero difference is never 0 mod 2^64); several changes cancel only by
@@ -81,6 +81,12 @@ std::uint64_t tile_checksum(const SnowSurface& s, const TileCells& c) {
         for (std::uint32_t x = 0; x < width; ++x) {
             sum += snow[x] * checksum_weights.snow[x] +
                    static_cast<std::uint64_t>(base[x]) * checksum_weights.base[x];
+        }
+        if (!s.compacted.empty()) { // what is drawn is the depth: units less compaction
+            const std::uint32_t* packed = s.compacted.data() + row;
+            for (std::uint32_t x = 0; x < width; ++x) {
+                sum -= packed[x] * checksum_weights.snow[x];
+            }
         }
         h = h * hash_multiplier + sum;
     }

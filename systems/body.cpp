@@ -10,20 +10,25 @@
 
 namespace snow {
 
-bool Body::depth_below(float dx, float dz, float& depth) const {
+bool Body::extent_at(float dx, float dz, float& below, float& above) const {
     if (shape == BodyShape::box) {
         if (!(std::abs(dx) <= half_extents.x && std::abs(dz) <= half_extents.z)) {
             return false;
         }
-        depth = half_extents.y;
+        below = above = half_extents.y;
         return true;
     }
     const float d2 = dx * dx + dz * dz;
     if (!(d2 <= radius * radius)) {
         return false;
     }
-    const float core = shape == BodyShape::capsule ? half_height : 0.0f;
-    depth = core + std::sqrt(radius * radius - d2);
+    const float cap = std::sqrt(radius * radius - d2);
+    if (shape == BodyShape::capsule) {
+        below = half_height + radius;
+        above = half_height + cap;
+    } else {
+        below = above = cap;
+    }
     return true;
 }
 
@@ -39,6 +44,7 @@ Body make_body(const BodyDef& d) {
     b.half_height = d.half_height;
     b.on_ground = d.on_ground;
     b.snowball = d.snowball;
+    b.compaction = d.compaction;
     b.position = b.previous = d.position;
     b.motion = d.motion;
     return b;

@@ -5,6 +5,8 @@
 /// rolls over. Every unit they move stays in the ledger.
 #pragma once
 
+#include "systems/units.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -28,18 +30,21 @@ struct BodyDef {
     float radius = 0.25f;          ///< sphere and capsule radius (m)
     glm::vec3 half_extents{0.25f}; ///< box half size (m)
     float half_height = 0.5f;      ///< capsule: half length of its vertical core segment (m)
-    /// Each tick its lowest point is put on the highest bare ground (surface
-    /// or cover base) under its centre, as a walker or a rolling ball; else
+    /// Each tick its lowest point is put on the bare ground (surface or
+    /// cover base) under its centre, as a walker or a rolling ball: the
+    /// highest within its radius above where its feet were (it steps up that
+    /// far and passes under a roof), else the lowest (it climbs out); else
     /// its height is its own (path or host).
     bool on_ground = false;
     /// Picks up the snow it rolls over instead of pushing it aside; its
     /// radius grows with what it carries (packed snow).
     bool snowball = false;
+    /// Fraction in [0, 1] of the snow in its way that it packs down under it
+    /// instead of pushing it aside (a boot, a tyre): the same units stand
+    /// lower, at up to packed_snow_density. 0 pushes it all into the rims.
+    float compaction = 0.0f;
     BodyMotion motion;
 };
-
-/// Density (kg/m^3) of the snow a snowball packs; sets its growth.
-inline constexpr double packed_snow_density = 400.0;
 
 /// Component. `position` is this tick's, `previous` last tick's: trails and
 /// flake tests sweep between them.
@@ -50,6 +55,7 @@ struct Body {
     float half_height = 0.5f;
     bool on_ground = false;
     bool snowball = false;
+    float compaction = 0.0f;
     float bare_radius = 0.25f; ///< a snowball's radius carrying nothing
     glm::vec3 position{0.0f};
     glm::vec3 previous{0.0f};
@@ -61,9 +67,12 @@ struct Body {
     float along = 0.0f;        ///< path: metres along that segment
     std::uint64_t carried = 0; ///< snowball: units picked up (ledger bucket `carried`)
 
-    /// How far below its centre the body reaches at horizontal offset
-    /// (dx, dz) from it, or false when (dx, dz) lies outside its footprint.
-    [[nodiscard]] bool depth_below(float dx, float dz, float& depth) const;
+    /// How far below and above its centre the body reaches at horizontal
+    /// offset (dx, dz) from it, or false when (dx, dz) lies outside its
+    /// footprint. An upright capsule is a walker: it treads on flat soles
+    /// across its whole radius (a round bottom would clear only a strip
+    /// √(2·radius·depth) wide in thin snow); its head is round.
+    [[nodiscard]] bool extent_at(float dx, float dz, float& below, float& above) const;
     /// Half width of the footprint's bounding square (m).
     [[nodiscard]] float reach() const;
 };

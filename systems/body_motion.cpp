@@ -1,6 +1,7 @@
 // bodies: every body takes this tick's pose, in pool order: the host's
 // target (move_body), else along its path, else by its velocity. A walker
-// or rolling ball then stands on the highest bare ground under its centre.
+// or rolling ball then stands on the bare ground under its centre: the
+// highest within a step of its feet, so it passes under roofs.
 #include "systems/body.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
@@ -44,18 +45,25 @@ glm::vec3 advance(Body& b, float dt) {
     return wp[b.segment];
 }
 
-/// Highest bare top (m) of any surface or cover cell under (x, z).
-bool ground_under(const World& w, float x, float z, float& y) {
-    bool found = false;
-    y = -std::numeric_limits<float>::infinity();
+/// The bare top (m) a body whose feet may reach `reach` stands on at (x, z):
+/// the highest of any surface or cover cell at or below it (so it passes
+/// under a roof), else the lowest above it (it climbs out of what buried it).
+bool ground_under(const World& w, float x, float z, float reach, float& y) {
+    float below = -std::numeric_limits<float>::infinity();
+    float above = std::numeric_limits<float>::infinity();
     w.each<SnowSurface>([&](Entity, const SnowSurface& s) {
         std::uint32_t ix = 0, iz = 0;
         if (s.cell_at(x, z, ix, iz) && !s.is_void(s.index(ix, iz))) {
-            y = std::max(y, s.height(s.base_level[s.index(ix, iz)]));
-            found = true;
+            const float base = s.height(s.base_level[s.index(ix, iz)]);
+            if (base <= reach) {
+                below = std::max(below, base);
+            } else {
+                above = std::min(above, base);
+            }
         }
     });
-    return found;
+    y = below > -std::numeric_limits<float>::infinity() ? below : above;
+    return y != std::numeric_limits<float>::infinity();
 }
 
 /// Distance (m) from the centre down to the lowest point.
@@ -86,8 +94,10 @@ void body_system(World& w) {
         } else {
             p += b.velocity * dt;
         }
+        // It steps up by at most its own radius from where it stood.
+        const float reach = b.previous.y - centre_height(b) + b.reach();
         float ground = 0.0f;
-        if (b.on_ground && ground_under(w, p.x, p.z, ground)) {
+        if (b.on_ground && ground_under(w, p.x, p.z, reach, ground)) {
             p.y = ground + centre_height(b);
         }
         b.position = p;

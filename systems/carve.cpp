@@ -1,8 +1,10 @@
 // carve: a body that sinks into snow pushes the snow above its lowest point
 // out of its footprint into the ring of cells just outside it (the raised
-// rims of a trail); a snowball takes it instead. The footprint is swept from
-// last tick's pose to this one's in half-cell steps, so a fast body leaves a
-// continuous trench. Units only move: cell to cell, or cell to `carried`.
+// rims of a trail); a snowball takes it instead. A compacting body packs part
+// of it in place: the same units stand lower (SnowSurface::compacted). The
+// footprint is swept from last tick's pose to this one's in half-cell steps,
+// so a fast body leaves a continuous trench. Units only move: cell to cell,
+// or cell to `carried`; compaction changes heights, never units.
 #include "systems/body.hpp"
 #include "systems/limits.hpp"
 #include "systems/snow_surface.hpp"
@@ -42,25 +44,35 @@ bool cell_window(const SnowSurface& s, const Body& b, CellBox& box) {
     return true;
 }
 
-/// Lowest point (m) of the body over world (x, z) along this tick's sweep;
-/// false when no pose of the sweep covers it.
-bool swept_bottom(const Body& b, float x, float z, std::uint32_t steps, float& y) {
-    y = std::numeric_limits<float>::infinity();
+/// Lowest and highest point (m) of the body over world (x, z) along this
+/// tick's sweep; false when no pose of the sweep covers it.
+bool swept_span(const Body& b, float x, float z, std::uint32_t steps, float& bottom, float& top) {
+    bottom = std::numeric_limits<float>::infinity();
+    top = -bottom;
     bool hit = false;
     for (std::uint32_t k = 0; k <= steps; ++k) {
         const glm::vec3 at =
             b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
-        float depth = 0.0f;
-        if (b.depth_below(x - at.x, z - at.z, depth)) {
-            y = std::min(y, at.y - depth);
+        float below = 0.0f, above = 0.0f;
+        if (b.extent_at(x - at.x, z - at.z, below, above)) {
+            bottom = std::min(bottom, at.y - below);
+            top = std::max(top, at.y + above);
             hit = true;
         }
     }
     return hit;
 }
 
+/// The level (unit_height steps) a height falls in, clamped to the grid's range.
+std::int64_t level_of(const SnowSurface& s, float y) {
+    const double level = std::floor(static_cast<double>(y) / s.unit_height);
+    return static_cast<std::int64_t>(std::clamp(level, -max_surface_level, max_surface_level));
+}
+
 /// Marks the swept footprint in the window and, per footprint cell, the
-/// level the body's lowest point reaches down to.
+/// level the body's lowest point reaches down to. A cell is in the footprint
+/// only where the body reaches above its bare top: a body under a roof passes
+/// beneath the roof's snow (whether it is below the snow's top is the floor).
 void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
                     CarveScratch& scratch) {
     const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
@@ -72,36 +84,73 @@ void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
         for (std::uint32_t i = 0; i < w; ++i) {
             const float x = s.x0 + (static_cast<float>(box.x0 + i) + 0.5f) * s.cell;
             const float z = s.z0 + (static_cast<float>(box.z0 + j) + 0.5f) * s.cell;
-            float bottom = 0.0f;
-            if (swept_bottom(b, x, z, steps, bottom)) {
+            const std::size_t c = s.index(box.x0 + i, box.z0 + j);
+            float bottom = 0.0f, top = 0.0f;
+            if (swept_span(b, x, z, steps, bottom, top) && !s.is_void(c) &&
+                level_of(s, top) > s.base_level[c]) {
                 const std::size_t k = static_cast<std::size_t>(j) * w + i;
                 scratch.mask[k] = 1;
-                const double level = std::floor(static_cast<double>(bottom) / s.unit_height);
-                scratch.floor[k] = static_cast<std::int64_t>(
-                    std::clamp(level, -max_surface_level, max_surface_level));
+                scratch.floor[k] = level_of(s, bottom);
             }
         }
     }
 }
 
-/// Takes the snow above the body's lowest point out of the footprint cells;
-/// returns the units taken.
-std::uint64_t take_footprint(SnowSurface& s, const CellBox& box, const CarveScratch& scratch) {
+/// Levels the packed layer at the bottom of a cell stands: the fewest units
+/// that hold its compaction, at packed_snow_density (fresh snow lies on top).
+std::int64_t packed_layer(std::uint32_t units, std::uint32_t squeezed) {
+    std::uint32_t m = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(units, (std::uint64_t{squeezed} * 4 + 2) / 3));
+    while (m < units && max_compaction(m) < squeezed) {
+        ++m;
+    }
+    return static_cast<std::int64_t>(m) - squeezed;
+}
+
+/// Lowers cell c's snow top to `target` (a level at or above its base),
+/// cutting from the top: fresh snow first, then the packed layer at
+/// max_packing units a level. Of what it cuts, the fraction `compaction`
+/// stays, packed under the body: a compacting body stands on packed snow (it
+/// cuts no lower than the packed layer, and the new one may stand above its
+/// lowest point), so what it packed once it never cuts again. Adds the units
+/// that leave the cell to `taken`; false when the cell is already that low.
+bool lower_cell(SnowSurface& s, std::size_t c, std::int64_t target, float compaction,
+                std::uint64_t& taken) {
+    const std::int64_t units = s.snow[c];
+    const std::uint32_t squeezed = s.compacted.empty() ? 0 : s.compacted[c];
+    if (compaction > 0.0f) {
+        target = std::max(target, s.base_level[c] + packed_layer(s.snow[c], squeezed));
+    }
+    if (s.level(c) <= target) {
+        return false;
+    }
+    const std::int64_t keep = target - s.base_level[c]; // levels left standing under the cut
+    const std::int64_t cut_left = std::min(squeezed + keep, keep * max_packing);
+    const auto packed = static_cast<std::int64_t>(
+        std::llround(static_cast<double>(compaction) * static_cast<double>(units - cut_left)));
+    const std::int64_t left = cut_left + packed;
+    const std::int64_t depth = std::max(keep, (left + max_packing - 1) / max_packing);
+    s.snow[c] = static_cast<std::uint32_t>(left);
+    if (!s.compacted.empty()) {
+        s.compacted[c] = 0;
+    }
+    s.compact(c, static_cast<std::uint32_t>(left - depth));
+    taken += static_cast<std::uint64_t>(units - left);
+    return true;
+}
+
+/// Lowers the snow above the body's lowest point in the footprint cells;
+/// returns the units taken out of them.
+std::uint64_t take_footprint(SnowSurface& s, const CellBox& box, const CarveScratch& scratch,
+                             float compaction) {
     const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
     std::uint64_t taken = 0;
     for (std::uint32_t j = 0; j < h; ++j) {
         for (std::uint32_t i = 0; i < w; ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * w + i;
             const std::size_t c = s.index(box.x0 + i, box.z0 + j);
-            if (scratch.mask[k] == 0 || s.is_void(c) || s.snow[c] == 0) {
-                continue;
-            }
-            const std::int64_t above = s.level(c) - std::max(s.base_level[c], scratch.floor[k]);
-            if (above > 0) {
-                const auto take =
-                    static_cast<std::uint32_t>(std::min<std::int64_t>(above, s.snow[c]));
-                s.snow[c] -= take;
-                taken += take;
+            if (scratch.mask[k] != 0 && s.snow[c] != 0 &&
+                lower_cell(s, c, std::max(s.base_level[c], scratch.floor[k]), compaction, taken)) {
                 s.mark_dirty(box.x0 + i, box.z0 + j);
             }
         }
@@ -140,7 +189,7 @@ void raise_rims(SnowSurface& s, const CarveScratch& scratch, std::uint64_t units
     for (std::uint64_t k = 0; k < n; ++k) {
         const std::uint32_t c = scratch.ring[k];
         s.snow[c] += static_cast<std::uint32_t>(units / n + (k < units % n ? 1 : 0));
-        s.mark_dirty(c % s.nx, c / s.nx);
+        s.mark_dirty(c);
     }
 }
 
@@ -165,7 +214,7 @@ void carve_system(World& w) {
                     continue; // nowhere to push it: the footprint fills the grid
                 }
             }
-            const std::uint64_t taken = take_footprint(s, box, *scratch);
+            const std::uint64_t taken = take_footprint(s, box, *scratch, b.compaction);
             counters.carved_units += taken;
             if (b.snowball) {
                 b.carried += taken;

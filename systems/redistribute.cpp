@@ -218,6 +218,9 @@ void apply_tile(TileGrid& g, SnowSurface& s, std::uint32_t t) {
             const std::size_t c = s.index(ix, iz);
             if (delta[c] != 0) {
                 s.snow[c] = static_cast<std::uint32_t>(s.snow[c] + delta[c]);
+                if (delta[c] < 0) {
+                    s.fit_compaction(c);
+                }
                 delta[c] = 0;
                 g.changed(ix, iz);
             }
@@ -257,19 +260,28 @@ void smooth_step(TileGrid& g, SnowSurface& s) {
 
 /// Flags the interior cells x0..x1 of row iz (1 <= x0, x1 + 1 < nx,
 /// 0 < iz < nz - 1) that hold snow and exceed the cap: the only ones
-/// cell_outflow can move. Branch-free over plain arrays, so it vectorises.
+/// cell_outflow can move. Branch-free over plain arrays, so it vectorises;
+/// `Packed`: the surface holds compacted snow, which lowers the levels.
+template <bool Packed>
 void flag_row(const SnowSurface& s, std::uint32_t iz, std::uint32_t x0, std::uint32_t x1,
               std::uint8_t* __restrict flags) {
     const std::size_t row = s.index(0, iz);
     const std::int64_t* base = s.base_level.data();
     const std::uint32_t* snow = s.snow.data();
+    const std::uint32_t* packed = s.compacted.data();
     const std::size_t nx = s.nx;
     const std::int64_t limit = s.laplacian_limit_units;
+    const auto level = [&](std::size_t c) {
+        if constexpr (Packed) {
+            return base[c] + snow[c] - std::int64_t{packed[c]};
+        } else {
+            return base[c] + snow[c];
+        }
+    };
     for (std::size_t ix = x0; ix <= x1; ++ix) {
         const std::size_t c = row + ix;
-        const std::int64_t h = base[c] + snow[c];
-        const std::int64_t around = (base[c - 1] + snow[c - 1]) + (base[c + 1] + snow[c + 1]) +
-                                    (base[c - nx] + snow[c - nx]) + (base[c + nx] + snow[c + nx]);
+        const std::int64_t h = level(c);
+        const std::int64_t around = level(c - 1) + level(c + 1) + level(c - nx) + level(c + nx);
         flags[ix] = (snow[c] != 0) & (4 * h - around > limit);
     }
 }
@@ -292,7 +304,11 @@ void scan_step(TileGrid& g, SnowSurface& s, const Box& b) {
         if (b.x0 < x0) {
             visit(g, b.x0, iz); // column 0
         }
-        flag_row(s, iz, x0, x1, flags);
+        if (s.compacted.empty()) {
+            flag_row<false>(s, iz, x0, x1, flags);
+        } else {
+            flag_row<true>(s, iz, x0, x1, flags);
+        }
         // Eight flags per word: a row with nothing to move costs a few tests.
         for (std::uint32_t j = x0; j <= x1; j += 8) {
             std::uint64_t word = 0;

@@ -3,6 +3,9 @@
 #include "ecs/rng.hpp"
 #include "systems/random_streams.hpp"
 
+#include <utility>
+#include <vector>
+
 namespace snow {
 
 std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
@@ -61,6 +64,20 @@ FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n) {
     return f;
 }
 
+namespace {
+
+/// A body of `shape` and `radius` lapping `path` at 1.5 m/s from its first point.
+BodyDef lapping(BodyShape shape, float radius, std::vector<glm::vec3> path) {
+    BodyDef d;
+    d.shape = shape;
+    d.radius = radius;
+    d.position = path.front();
+    d.motion = BodyMotion{std::move(path), 1.5f, true};
+    return d;
+}
+
+} // namespace
+
 std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
     YardOptions o;
     o.threads = threads;
@@ -104,21 +121,16 @@ std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
     cover.cell = 0.1f;
     sim->add_cover(cover);
     // A snowball pressed into the ground doing laps: it takes the snow it rolls over.
-    BodyDef ball;
-    ball.radius = 0.3f;
-    ball.position = {-6.0f, 0.2f, -6.0f};
+    BodyDef ball = lapping(
+        BodyShape::sphere, 0.3f,
+        {{-6.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -3.0f}, {-6.0f, 0.2f, -3.0f}});
     ball.snowball = true;
-    ball.motion.waypoints = {
-        {-6.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -6.0f}, {-2.0f, 0.2f, -3.0f}, {-6.0f, 0.2f, -3.0f}};
-    ball.motion.speed = 1.5f;
     sim->add_body(ball);
-    BodyDef walker; // a capsule lapping through the ground's snow: trails and rims
-    walker.shape = BodyShape::capsule;
-    walker.radius = 0.25f;
+    // A capsule walking laps through the ground's snow: trails and rims.
+    BodyDef walker = lapping(BodyShape::capsule, 0.25f,
+                             {{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}});
     walker.half_height = 0.6f;
     walker.on_ground = true;
-    walker.motion =
-        BodyMotion{{{2.0f, 0.0f, -4.0f}, {6.0f, 0.0f, -4.0f}, {6.0f, 0.0f, 4.0f}}, 1.5f, true};
     sim->add_body(walker);
     WindFieldDef field; // a coarse field the buildings shape
     field.cells_x = field.cells_z = 16;

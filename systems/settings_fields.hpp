@@ -167,6 +167,7 @@ inline constexpr FieldRule<BodyMotion> motion_fields[] = {
 /// motion has its own table).
 inline constexpr FieldRule<BodyDef> body_fields[] = {
     {"position", &BodyDef::position},
+    {"compaction", &BodyDef::compaction, between(0, 1)},
 };
 inline constexpr FieldRule<BodyDef> box_body_fields[] = {
     {"half_extents", &BodyDef::half_extents, positive_up_to(max_body_size)},

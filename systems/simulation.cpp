@@ -199,8 +199,7 @@ std::uint64_t Simulation::drop_snowball(Entity e) {
     const std::uint64_t room = std::numeric_limits<std::uint32_t>::max() - best->snow[cell];
     const std::uint64_t units = std::min(b.carried, room);
     best->snow[cell] += static_cast<std::uint32_t>(units);
-    best->mark_dirty(static_cast<std::uint32_t>(cell % best->nx),
-                     static_cast<std::uint32_t>(cell / best->nx));
+    best->mark_dirty(cell);
     b.carried -= units;
     b.radius = snowball_radius(b.bare_radius, b.carried);
     return units;

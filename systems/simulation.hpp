@@ -111,7 +111,7 @@ class Simulation {
     [[nodiscard]] const SimConfig& config() const { return world_.resource<SimConfig>(); }
     [[nodiscard]] std::uint64_t tick_count() const { return world_.resource<SimClock>().tick; }
     [[nodiscard]] const FlakePool& flakes() const { return world_.resource<FlakePool>(); }
-    /// The snow surface of a surface entity (depth per cell: snow[i] * unit_height).
+    /// The snow surface of a surface entity (depth per cell: SnowSurface::depth(i)).
     [[nodiscard]] const SnowSurface& surface(Entity surface) const;
     /// A moving body as this tick left it (position, radius, snow carried).
     [[nodiscard]] const Body& body(Entity body) const;

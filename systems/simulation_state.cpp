@@ -1,10 +1,10 @@
 // The Simulation's state as a whole: what state_hash() covers and what
 // save()/restore() carry. A tick changes the clock, the ledger, the counters,
-// the flake pool, the wind, the surfaces' snow (and the cells waiting for
-// smoothing), each cover's base (it follows the geometry, in as many ticks as
-// the flake pool allows), the bodies and the occlusion map; everything else is
-// source data (source_versions.hpp), hashed but not saved, or a cache rebuilt
-// from it.
+// the flake pool, the wind, the surfaces' snow (its compaction and the cells
+// waiting for smoothing), each cover's base (it follows the geometry, in as
+// many ticks as the flake pool allows), the bodies and the occlusion map;
+// everything else is source data (source_versions.hpp), hashed but not saved,
+// or a cache rebuilt from it.
 #include "systems/simulation.hpp"
 
 #include "ecs/state_hash.hpp"
@@ -99,12 +99,16 @@ void hash_emitters(StateHasher& h, const World& w) {
     });
 }
 
-/// What ticks change in a surface: its snow, the cells waiting for smoothing
-/// (they decide next tick's work) and the bound deposit's prefilter uses.
+/// What ticks change in a surface: its snow and its compaction, the cells
+/// waiting for smoothing (they decide next tick's work) and the bound
+/// deposit's prefilter uses.
 void hash_snow(StateHasher& h, const World& w) {
     w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
         h.value(e.bits);
         h.span(std::span<const std::uint32_t>(s.snow));
+        if (!s.compacted.empty()) { // never compacted: the hash is what it was before compaction
+            h.span(std::span<const std::uint32_t>(s.compacted));
+        }
         for (const std::uint32_t v : {s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}) {
             h.value(v);
         }
@@ -139,7 +143,8 @@ void hash_bodies(StateHasher& h, const World& w) {
     w.each<Body>([&](Entity e, const Body& b) {
         h.value(e.bits);
         h.value(b.shape);
-        for (const float v : {b.radius, b.half_height, b.bare_radius, b.along, b.motion.speed}) {
+        for (const float v :
+             {b.radius, b.half_height, b.bare_radius, b.compaction, b.along, b.motion.speed}) {
             h.value(v);
         }
         for (const glm::vec3& v : {b.half_extents, b.position, b.previous, b.velocity, b.target}) {

@@ -31,7 +31,7 @@ struct Snapshot {
     std::optional<Wind> wind;            ///< its walk, gust and settings
     std::optional<WindField> wind_field; ///< the whole field: state and what derives from it
     std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
-    /// Snow and pending smoothing of every surface, by entity.
+    /// Snow, compaction and pending smoothing of every surface, by entity.
     std::vector<std::pair<Entity, SnowSurface>> surfaces;
     /// What each cover's base was built from and its drop cells, by entity.
     std::vector<std::pair<Entity, SnowCover>> covers;

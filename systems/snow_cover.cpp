@@ -103,6 +103,7 @@ bool apply_base(World& w, SnowSurface& s, const std::vector<std::int64_t>& targe
                                      static_cast<float>(s.z0 + (iz + 0.5) * s.cell)},
                                     k_over_m};
                 s.snow[i] -= shed_units(pool, s.snow[i], at);
+                s.fit_compaction(i);
                 if (s.snow[i] > 0) {
                     complete = false;
                     continue;

@@ -133,6 +133,16 @@ void SnowSurface::mark_dirty(std::uint32_t ix, std::uint32_t iz) {
     level_bound = std::max(level_bound, level(index(ix, iz)));
 }
 
+void SnowSurface::compact(std::size_t i, std::uint32_t levels) {
+    if (levels == 0) {
+        return; // a surface nothing packed keeps no per-cell compaction at all
+    }
+    if (compacted.empty()) {
+        compacted.assign(snow.size(), 0);
+    }
+    compacted[i] += levels;
+}
+
 void SnowSurface::clear_dirty() {
     for (const std::uint32_t t : dirty_tiles) {
         tile_dirty[t] = CellBox{};

@@ -5,9 +5,11 @@
 
 #include "ecs/entity.hpp"
 #include "systems/limits.hpp"
+#include "systems/units.hpp"
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -65,6 +67,16 @@ struct CellBox {
 /// flake and its edges are closed, so no snow ever reaches it.
 inline constexpr std::int64_t void_level = std::numeric_limits<std::int64_t>::min() / 4;
 
+/// How many times denser than fresh snow the most packed snow is.
+inline constexpr std::uint32_t max_packing = 4;
+static_assert(packed_snow_density == max_packing * fresh_snow_density);
+
+/// The most levels compaction may take off `units` of snow: packed to
+/// packed_snow_density they still stand ceil(units / max_packing) levels.
+[[nodiscard]] constexpr std::uint32_t max_compaction(std::uint32_t units) {
+    return units - (units / max_packing + (units % max_packing != 0 ? 1 : 0));
+}
+
 /// Bits of SnowSurface::closed: edge towards -x, +x, -z, +z.
 inline constexpr std::uint8_t closed_all = 0xF;
 
@@ -76,6 +88,12 @@ struct SnowSurface {
     float unit_height = 0.0f;             ///< metres of snow one unit adds to a cell
     std::vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
     std::vector<std::uint32_t> snow;      ///< settled units per cell (row-major, x fastest)
+    /// Per cell, the levels by which packed snow stands lower than its units
+    /// would at fresh density (docs/cover_and_bodies.md "Compaction"): its
+    /// mean density is fresh_snow_density · snow / depth_levels. Empty until a
+    /// body first compacts snow here. At most max_compaction(snow[i]); snow
+    /// falling on it keeps the packed layer, so the mean relaxes to fresh.
+    std::vector<std::uint32_t> compacted;
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
     /// Largest stable height step (levels) to a neighbour, the angle of
@@ -105,7 +123,15 @@ struct SnowSurface {
     [[nodiscard]] std::size_t index(std::uint32_t ix, std::uint32_t iz) const {
         return static_cast<std::size_t>(iz) * nx + ix;
     }
-    [[nodiscard]] std::int64_t level(std::size_t i) const { return base_level[i] + snow[i]; }
+    /// Height of cell i's snow in levels: its units at fresh density less
+    /// what compaction took off. Every height of the snow comes from here.
+    [[nodiscard]] std::int64_t depth_levels(std::size_t i) const {
+        return std::int64_t{snow[i]} - (compacted.empty() ? 0 : std::int64_t{compacted[i]});
+    }
+    /// Level of cell i's snow top.
+    [[nodiscard]] std::int64_t level(std::size_t i) const {
+        return base_level[i] + depth_levels(i);
+    }
     /// World height (m) of a level, rounded once from double (as every user of
     /// heights compares them).
     [[nodiscard]] float height(std::int64_t lvl) const {
@@ -113,11 +139,29 @@ struct SnowSurface {
     }
     /// World height (m) of the snow top of cell i.
     [[nodiscard]] float top_y(std::size_t i) const { return height(level(i)); }
+    /// Snow depth (m) of cell i.
+    [[nodiscard]] float depth(std::size_t i) const {
+        return static_cast<float>(static_cast<double>(depth_levels(i)) * unit_height);
+    }
+    /// Lowers cell i's snow by `levels` without moving a unit (a body packs
+    /// it); `levels` <= max_compaction(snow[i]) - compacted[i].
+    void compact(std::size_t i, std::uint32_t levels);
+    /// After units left cell i: it keeps no more compaction than its units can
+    /// hold (what was taken came off the top, fresh snow first).
+    void fit_compaction(std::size_t i) {
+        if (!compacted.empty()) {
+            compacted[i] = std::min(compacted[i], max_compaction(snow[i]));
+        }
+    }
     /// Cell under world (x, z); false when outside the grid.
     [[nodiscard]] bool cell_at(float x, float z, std::uint32_t& ix, std::uint32_t& iz) const;
     /// Records that cell (ix, iz) changed: grows its tile's dirty box, the
     /// dirty rectangle and level_bound.
     void mark_dirty(std::uint32_t ix, std::uint32_t iz);
+    /// The same for cell index i.
+    void mark_dirty(std::size_t i) {
+        mark_dirty(static_cast<std::uint32_t>(i % nx), static_cast<std::uint32_t>(i / nx));
+    }
     /// Forgets every dirty cell (redistribution took them over).
     void clear_dirty();
     [[nodiscard]] std::uint32_t tiles_x() const {

@@ -19,9 +19,12 @@ namespace {
 /// at `at`; stops, keeping the rest on the edge, when the pool is full.
 void shed(SnowSurface& s, std::uint32_t ix, std::uint32_t iz, FlakePool& pool, const ClumpStart& at,
           SimCounters& counters) {
-    std::uint32_t& cell = s.snow[s.index(ix, iz)];
-    const std::uint32_t gone = shed_units(pool, cell - s.edge_limit_units, at);
-    cell -= gone;
+    const std::size_t i = s.index(ix, iz);
+    // Fresh snow lies on top: each unit shed lowers the edge by a level.
+    const auto over = static_cast<std::uint32_t>(s.depth_levels(i) - s.edge_limit_units);
+    const std::uint32_t gone = shed_units(pool, over, at);
+    s.snow[i] -= gone;
+    s.fit_compaction(i);
     counters.spilled_units += gone;
     if (gone != 0) {
         s.mark_dirty(ix, iz); // redistribution refills the edge from inside
@@ -36,7 +39,7 @@ void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& 
         const bool full_row = iz == 0 || iz + 1 == s.nz;
         const std::uint32_t step = full_row ? 1 : std::max(s.nx - 1, 1u);
         for (std::uint32_t ix = 0; ix < s.nx; ix += step) {
-            if (s.snow[s.index(ix, iz)] > limit) {
+            if (s.depth_levels(s.index(ix, iz)) > limit) {
                 const double ox = ix == 0 ? -1.0 : (ix + 1 == s.nx ? 1.0 : 0.0);
                 const double oz = iz == 0 ? -1.0 : (iz + 1 == s.nz ? 1.0 : 0.0);
                 shed(s, ix, iz, pool, clump_beyond(s, ix, iz, ox, oz, k_over_m), counters);
@@ -52,7 +55,7 @@ void spill_drops(SnowSurface& s, const SnowCover& cover, FlakePool& pool, float 
     static constexpr double off_z[4] = {0.0, 0.0, -1.0, 1.0};
     for (std::size_t k = 0; k < cover.edge_cells.size(); ++k) {
         const std::uint32_t c = cover.edge_cells[k];
-        if (s.snow[c] > s.edge_limit_units) {
+        if (s.depth_levels(c) > s.edge_limit_units) {
             const std::uint8_t side = cover.edge_side[k];
             const auto ix = static_cast<std::uint32_t>(c % s.nx);
             const auto iz = static_cast<std::uint32_t>(c / s.nx);

@@ -13,5 +13,8 @@ inline constexpr std::uint32_t max_flake_units = 1000;
 
 /// Density of fresh snow (kg/m^3); turns settled units into depth.
 inline constexpr double fresh_snow_density = 100.0;
+/// Density of the most packed snow (kg/m^3): a snowball's, and the limit a
+/// body's compaction reaches.
+inline constexpr double packed_snow_density = 400.0;
 
 } // namespace snow

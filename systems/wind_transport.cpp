@@ -123,16 +123,12 @@ void plan_surface(const SnowSurface& s, const WindSampler& air, const WindTransp
     }
 }
 
-void mark(SnowSurface& s, std::size_t i) {
-    s.mark_dirty(static_cast<std::uint32_t>(i % s.nx), static_cast<std::uint32_t>(i / s.nx));
-}
-
 /// Sources first (each gives at most what it had), then destinations; what
 /// cannot arrive (a full pool, a cell at its limit) goes back to its source.
 void apply(SnowSurface& s, const std::vector<Move>& moves, FlakePool& pool, float k_over_m) {
     for (const Move& m : moves) {
         s.snow[m.from] -= m.units;
-        mark(s, m.from);
+        s.mark_dirty(m.from);
     }
     for (const Move& m : moves) {
         std::uint32_t arrived = 0;
@@ -143,9 +139,13 @@ void apply(SnowSurface& s, const std::vector<Move>& moves, FlakePool& pool, floa
         } else {
             arrived = std::min(m.units, max_cell_units - s.snow[m.to]);
             s.snow[m.to] += arrived;
-            mark(s, m.to);
+            s.mark_dirty(m.to);
         }
         s.snow[m.from] += m.units - arrived;
+    }
+    // Once every move arrived: a source keeps the compaction its units still hold.
+    for (const Move& m : moves) {
+        s.fit_compaction(m.from);
     }
 }
 

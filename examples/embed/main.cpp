@@ -52,7 +52,7 @@ int main() {
         const snow::SnowSurface& surface = sim.surface(ground_id);
         float deepest = 0.0f;
         for (std::size_t i = 0; i < surface.cell_count(); ++i) {
-            deepest = std::max(deepest, surface.snow[i] * surface.unit_height);
+            deepest = std::max(deepest, surface.depth(i));
         }
         const snow::MassReport m = sim.mass();
         std::printf("embed_snow: %llu ticks, %u flakes airborne, deepest snow %.4f m\n",

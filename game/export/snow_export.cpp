@@ -56,7 +56,8 @@ std::vector<std::uint16_t> depth_mm(const SnowSurface& s) {
     std::vector<std::uint16_t> px(s.cell_count(), 0);
     for (std::size_t i = 0; i < px.size(); ++i) {
         if (!s.is_void(i)) {
-            const double mm = std::round(static_cast<double>(s.snow[i]) * s.unit_height * 1000.0);
+            const double mm =
+                std::round(static_cast<double>(s.depth_levels(i)) * s.unit_height * 1000.0);
             px[i] = static_cast<std::uint16_t>(std::min(mm, 65535.0));
         }
     }

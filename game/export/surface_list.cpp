@@ -24,19 +24,19 @@ std::vector<NamedSurface> named_surfaces(const Simulation& sim) {
 
 SurfaceStats surface_stats(const SnowSurface& s) {
     SurfaceStats st;
-    std::uint32_t max_units = 0;
+    std::int64_t levels = 0, max_levels = 0;
     for (std::size_t i = 0; i < s.cell_count(); ++i) {
         if (!s.is_void(i)) {
             ++st.cells;
             st.settled_units += s.snow[i];
-            max_units = std::max(max_units, s.snow[i]);
+            levels += s.depth_levels(i);
+            max_levels = std::max(max_levels, s.depth_levels(i));
         }
     }
     const double unit = s.unit_height;
     st.mean_depth_m =
-        st.cells > 0 ? static_cast<double>(st.settled_units) * unit / static_cast<double>(st.cells)
-                     : 0.0;
-    st.max_depth_m = static_cast<double>(max_units) * unit;
+        st.cells > 0 ? static_cast<double>(levels) * unit / static_cast<double>(st.cells) : 0.0;
+    st.max_depth_m = static_cast<double>(max_levels) * unit;
     return st;
 }
 

@@ -129,6 +129,7 @@ Entity add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
     }
     d.on_ground = role.on_ground;
     d.snowball = role.snowball;
+    d.compaction = role.compaction;
     if (role.motion) {
         d.motion = *role.motion;
     }
@@ -187,6 +188,10 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if ((role.surface || role.collider || is_body(role)) && node.primitives.empty()) {
             scene_fail(path,
                        "declares a surface, collider or body, but the node has no triangle mesh");
+        }
+        if (role.compaction != 0.0f && !is_body(role)) {
+            scene_fail(path + ".compaction",
+                       "is for moving bodies only (a motion, a snowball or a capsule)");
         }
         if (role.collider == ColliderKind::mesh && is_body(role)) {
             scene_fail(path + ".collider", "a moving body must be a sphere, box or capsule");

@@ -61,6 +61,7 @@ constexpr Field<NodeSnow> node_snow_fields[] = {
     {"motion", &read_nested<&NodeSnow::motion, motion_schema, reject>},
     {"snowball", &NodeSnow::snowball},
     {"on_ground", &NodeSnow::on_ground},
+    {"compaction", &NodeSnow::compaction, between(0, 1)},
 };
 
 // --- scenes[s].extras.snow ---------------------------------------------------

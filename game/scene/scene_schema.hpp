@@ -24,8 +24,9 @@ struct NodeSnow {
     std::optional<ColliderKind> collider;
     /// A scripted path: the node's collider becomes a moving body.
     std::optional<BodyMotion> motion;
-    bool snowball = false;  ///< a moving sphere that picks up snow
-    bool on_ground = false; ///< the body stands on the bare ground under it
+    bool snowball = false;   ///< a moving sphere that picks up snow
+    bool on_ground = false;  ///< the body stands on the bare ground under it
+    float compaction = 0.0f; ///< the body packs this fraction of the snow in its way
 };
 
 /// A node whose collider moves (a path, a snowball, or a capsule) is a body.

@@ -365,6 +365,18 @@ TEST(SceneLoaderErrors, WrongExtrasTypesAndUnknownFields) {
                  {"nodes[0].extras.snow.surface has an unknown field 'x0'"});
     expect_error(with(R"({"snow": {"surface": {"cell": 1e39}}})"),
                  {"surface.cell must be a finite number within float range (got 1e+39)"});
+    // A body's compaction: a fraction, and only on a body.
+    for (const char* bad : {"-0.1", "1.5", "\"half\""}) {
+        expect_error(
+            with(std::string(R"({"snow": {"collider": "capsule", "compaction": )") + bad + "}}"),
+            {"nodes[0].extras.snow.compaction must be"});
+    }
+    expect_error(with(R"({"snow": {"collider": "box", "compaction": 0.5}})"),
+                 {"nodes[0].extras.snow.compaction is for moving bodies only"});
+    const SceneLoadResult packing =
+        with(R"({"snow": {"collider": "capsule", "on_ground": true, "compaction": 0.5}})");
+    ASSERT_NE(packing.sim, nullptr) << packing.error;
+    packing.sim->world().each<Body>([](Entity, const Body& b) { EXPECT_EQ(b.compaction, 0.5f); });
     // Extras that are not ours are ignored.
     EXPECT_NE(with(R"({"author": "someone", "snow": {}})").sim, nullptr);
 }

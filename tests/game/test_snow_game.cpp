@@ -122,6 +122,27 @@ TEST(SnowGame, HeadlessPlayerWalksForwardAndLeavesATrench) {
     EXPECT_LT(walk->walked, 4.3);
 }
 
+TEST(SnowGame, HeadlessPlayerWalksUnderThePorchRoof) {
+    // From the default start (1, 9) the player heads for the house: 260
+    // frames of W (12 m) take it under the porch roof (z 0.2 to -2.2, 2 m
+    // up) and out beyond it, on the ground all the way.
+    const std::filesystem::path dir =
+        std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_porch";
+    const snow::test::AppRun r =
+        run_game("MESA_SHADER_CACHE_DISABLE=true",
+                 "--headless --out " + dir.string() +
+                     " --size 160x120 --quality low --frames 280 --inject 0:W:260,270:ESC");
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::regex to("player walked ([0-9.]+) m from .* to \\(([-0-9.]+), ([-0-9.]+)\\)");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, to)) << r.out;
+    EXPECT_GT(std::stod(m[1]), 12.0) << r.out;
+    const double x = std::stod(m[2]), z = std::stod(m[3]);
+    EXPECT_GT(x, -0.45 + 0.25) << "under the porch roof, not along the house: " << r.out;
+    EXPECT_LT(x, 1.6) << r.out;
+    EXPECT_LT(z, -2.2) << "past the porch: " << r.out;
+}
+
 TEST(SnowGame, WindowUnderXvfbPlayerWalksForwardAndLeavesATrench) {
     const auto run = run_game_in_xvfb(walk_args);
     if (!run) {

@@ -74,10 +74,9 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
     SnowyYard y;
     Walker w(y.sim, {-2.0f, 5.0f, 0.0f});
     y.walk(w, {0.0f, 0.0f}, 1);
-    // It stands on the bare ground, its round bottom a little below it (the tread).
+    // It stands on the bare ground, its flat soles on it.
     const float lowest = y.sim.body(w.body()).position.y - 0.25f - 0.6f;
-    EXPECT_LT(lowest, -0.05f);
-    EXPECT_GT(lowest, -0.1f);
+    EXPECT_NEAR(lowest, 0.0f, 1.0e-6f);
     const std::uint64_t settled = y.sim.mass().settled;
     y.walk(w, {1.0f, 0.0f}, 150); // 1.4 m/s for 2.5 s: 3.5 m along +x
     const glm::vec3 p = y.sim.body(w.body()).position;
@@ -86,6 +85,9 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
     EXPECT_EQ(y.sim.mass().settled, settled) << "snow pushed aside, none lost";
     for (const float x : {-1.5f, -1.0f, -0.5f, 0.0f, 0.5f}) {
         EXPECT_LT(y.depth(x, 0.0f), 0.25f * y.depth(x, 1.0f)) << "trench floor at x " << x;
+        // As wide as the capsule: cleared to within a cell of its 0.25 m radius.
+        EXPECT_LT(y.depth(x, 0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
+        EXPECT_LT(y.depth(x, -0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
         EXPECT_NEAR(y.depth(x, 1.0f), 0.02f, 0.002f) << "untouched 1 m beside it";
     }
     const TrailReport t = w.trail(y.sim);
@@ -108,6 +110,50 @@ TEST(Walker, StopsAtAWallAndSlidesAlongIt) {
     const glm::vec3 p = y.sim.body(w.body()).position;
     EXPECT_EQ(p.x, x);
     EXPECT_NEAR(p.z, 1.4f * diagonal.y, 0.03f);
+}
+
+/// A snowy roof on a box from `low` to `high` over x in [-1, 1], z in [-1, 1].
+Entity add_roof(SnowyYard& y, float low, float high) {
+    SurfaceDef top;
+    top.x0 = top.z0 = -1.0f;
+    top.size_x = top.size_z = 2.0f;
+    top.cell = cell;
+    top.base_y = high;
+    top.spills = false;
+    const Entity roof =
+        y.sim.add_surface(top, y.sim.add_box({{-1.0f, low, -1.0f}, {1.0f, high, 1.0f}}));
+    for (std::uint32_t iz = 0; iz < y.sim.surface(roof).nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < y.sim.surface(roof).nx; ++ix) {
+            y.sim.add_settled_snow(roof, ix, iz, depth_units);
+        }
+    }
+    return roof;
+}
+
+TEST(Walker, WalksUnderARoofAndLeavesItsSnowAlone) {
+    SnowyYard y;
+    const Entity roof = add_roof(y, 2.0f, 2.15f); // a porch: higher than the 1.7 m player
+    const std::vector<std::uint32_t> roof_snow = y.sim.surface(roof).snow;
+    Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
+    y.walk(w, {1.0f, 0.0f}, 60); // to x = -0.6, under the roof
+    EXPECT_NEAR(w.eye(y.sim).y, w.depth_under(y.sim) + 1.6f, 1.0e-4f) << "on the ground";
+    y.walk(w, {1.0f, 0.0f}, 90); // out the other side, to x = 1.5
+    const glm::vec3 p = y.sim.body(w.body()).position;
+    EXPECT_NEAR(p.x, 1.5f, 0.02f);
+    EXPECT_NEAR(p.y, 0.85f, 1.0e-4f) << "its soles on the ground all the way";
+    EXPECT_EQ(y.sim.surface(roof).snow, roof_snow);
+    const auto under = snow_column(y.sim.world(), 0.0f, 0.0f, 0.5f); // the ground, not the roof
+    ASSERT_TRUE(under);
+    EXPECT_EQ(under->base, 0.0f);
+    EXPECT_LT(under->depth, 0.25f * y.depth(0.0f, 1.5f)) << "its trench under the roof";
+}
+
+TEST(Walker, ALowBeamStopsIt) {
+    SnowyYard y;
+    add_roof(y, 1.0f, 1.2f); // lower than its head
+    Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
+    y.walk(w, {1.0f, 0.0f}, 90);
+    EXPECT_LT(y.sim.body(w.body()).position.x, -1.0f - 0.25f + 0.03f);
 }
 
 TEST(Walker, StaysOnTheSnowAndInsideTheGround) {

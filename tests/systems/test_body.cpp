@@ -2,6 +2,7 @@
 // by exactly what it takes; swept trenches at speed; flakes pushed aside;
 // determinism and restore with bodies; bad input rejected.
 #include "systems/simulation.hpp"
+#include "systems/validation.hpp"
 #include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace snow {
 namespace {
@@ -189,6 +191,7 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
         walker.radius = 0.2f;
         walker.half_height = 0.6f;
         walker.on_ground = true;
+        walker.compaction = 0.5f; // it packs half of what it treads on
         walker.motion = BodyMotion{{{1.0f, 0.0f, -1.5f}, {-1.0f, 0.0f, 1.5f}}, 1.4f, true};
         g->sim.add_body(walker);
     }
@@ -197,12 +200,135 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
         b.sim.tick();
         ASSERT_EQ(a.sim.state_hash(), b.sim.state_hash()) << "tick " << t;
     }
+    ASSERT_FALSE(a.s().compacted.empty()) << "the walker packed no snow";
     const auto saved = a.sim.save();
+    const std::uint64_t saved_hash = a.sim.state_hash();
     a.sim.run(200);
     const std::uint64_t straight = a.sim.state_hash();
+    const std::vector<std::uint32_t> packed = a.s().compacted;
     a.sim.restore(*saved);
     a.sim.run(200);
     EXPECT_EQ(a.sim.state_hash(), straight);
+    EXPECT_EQ(a.s().compacted, packed);
+    // The compaction is state: the same snow packed otherwise hashes otherwise.
+    Snapshot changed = *saved;
+    for (auto& [e, s] : changed.surfaces) {
+        for (std::size_t i = 0; i < s.compacted.size(); ++i) {
+            s.compacted[i] = s.compacted[i] > 0 ? s.compacted[i] - 1 : 0;
+        }
+    }
+    a.sim.restore(changed);
+    EXPECT_NE(a.sim.state_hash(), saved_hash);
+}
+
+/// A walker-sized capsule standing on the ground, walking +x along z = 0
+/// across 1.5 m of snow, packing `compaction` of what is in its way.
+BodyDef trudger(float compaction) {
+    BodyDef d;
+    d.shape = BodyShape::capsule;
+    d.radius = 0.2f;
+    d.half_height = 0.6f;
+    d.on_ground = true;
+    d.compaction = compaction;
+    d.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}}, 1.5f, false};
+    return d;
+}
+
+/// Mean snow depth (m) and units over the cells of a 0.2 m square at (x, z).
+struct Patch {
+    double depth = 0.0;
+    std::uint64_t units = 0;
+};
+Patch patch(const SnowSurface& s, float x, float z) {
+    Patch p;
+    std::uint32_t n = 0;
+    for (float dz = -0.075f; dz < 0.1f; dz += cell) {
+        for (float dx = -0.075f; dx < 0.1f; dx += cell) {
+            std::uint32_t ix = 0, iz = 0;
+            EXPECT_TRUE(s.cell_at(x + dx, z + dz, ix, iz));
+            p.depth += s.depth(s.index(ix, iz));
+            p.units += s.snow[s.index(ix, iz)];
+            ++n;
+        }
+    }
+    p.depth /= n;
+    return p;
+}
+
+TEST(Body, ACompactingBodyPacksTheSnowLowerWithTheSameUnits) {
+    SnowyGround plain, packing;
+    plain.sim.add_body(trudger(0.0f));
+    packing.sim.add_body(trudger(0.75f));
+    const std::uint64_t settled = packing.s().settled_units();
+    plain.run(90);
+    packing.run(90); // both at x = 0 now
+    EXPECT_EQ(packing.s().settled_units(), settled) << "packed, not lost";
+    EXPECT_EQ(packing.sim.mass().carried, 0u);
+    EXPECT_FALSE(packing.s().compacted.empty());
+    const Patch pushed = patch(plain.s(), -0.7f, 0.0f);
+    const Patch packed = patch(packing.s(), -0.7f, 0.0f);
+    // The plain trench goes down to the ground (smoothing lets a little back
+    // from the rims); the packed one keeps 3/4 of its units at 4× the density:
+    // 3/4 · 10 cm / 4 = 1.9 cm of snow, lower than 3/4 of the units would
+    // stand fresh (7.5 cm).
+    EXPECT_LT(pushed.depth, 0.005);
+    EXPECT_GT(packed.units, 3 * pushed.units);
+    EXPECT_NEAR(packed.depth, 0.01875, 0.003);
+    EXPECT_LT(packed.depth, 0.5 * static_cast<double>(packed.units) / 16 * packing.s().unit_height);
+    // The rims beside it hold only the quarter it pushed aside.
+    const std::uint32_t rim_plain = plain.at(-0.7f, 0.225f), rim_packed = packing.at(-0.7f, 0.225f);
+    EXPECT_GT(rim_plain, rim_packed);
+    EXPECT_GT(rim_packed, depth_units);
+    // Fresh snow on the packed trail stands on the packed layer: every new
+    // unit a level higher, the compaction kept, the mean density relaxing
+    // towards fresh.
+    std::uint32_t ix = 0, iz = 0;
+    ASSERT_TRUE(packing.s().cell_at(-0.7f, 0.0f, ix, iz));
+    const std::size_t c = packing.s().index(ix, iz);
+    const std::uint32_t squeezed = packing.s().compacted[c];
+    const std::uint32_t units = packing.s().snow[c];
+    const std::int64_t levels = packing.s().depth_levels(c);
+    EXPECT_GT(squeezed, 0u);
+    packing.sim.add_settled_snow(packing.ground, ix, iz, 4000);
+    EXPECT_EQ(packing.s().compacted[c], squeezed);
+    EXPECT_EQ(packing.s().depth_levels(c), levels + 4000);
+    EXPECT_LT(static_cast<double>(packing.s().snow[c]) / packing.s().depth_levels(c),
+              static_cast<double>(units) / levels);
+}
+
+TEST(Body, ABodyUnderASnowyRoofLeavesTheRoofsSnowAlone) {
+    SnowyGround g;
+    SurfaceDef d; // a porch roof 2.2 m up over the middle of the ground
+    d.x0 = -1.0f;
+    d.z0 = -1.0f;
+    d.size_x = d.size_z = 2.0f;
+    d.cell = cell;
+    d.base_y = 2.2f;
+    d.spills = false;
+    const Entity roof = g.sim.add_surface(d);
+    for (std::uint32_t iz = 0; iz < g.sim.surface(roof).nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < g.sim.surface(roof).nx; ++ix) {
+            g.sim.add_settled_snow(roof, ix, iz, depth_units);
+        }
+    }
+    const std::vector<std::uint32_t> roof_snow = g.sim.surface(roof).snow;
+    // A 1.7 m walker under it, and a 0.5 m ball whose top is 5 cm under the
+    // roof's bare top; both cut the ground's snow, neither the roof's.
+    BodyDef walker = trudger(0.0f);
+    walker.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.5f, false};
+    g.sim.add_body(walker);
+    const Entity b = g.sim.add_body(ball(-1.5f, 1.9f, 0.25f));
+    g.sim.set_body_velocity(b, {1.5f, 0.0f, 0.5f});
+    g.run(120);
+    EXPECT_EQ(g.sim.body(b).position.y, 1.9f);
+    EXPECT_GT(g.sim.counters().carved_units, 0u);
+    EXPECT_LT(g.at(0.0f, 0.0f), depth_units / 4) << "the walker's trench under the roof";
+    EXPECT_EQ(g.sim.surface(roof).snow, roof_snow);
+    // The same ball 10 cm higher reaches into the roof's snow and cuts it.
+    g.sim.move_body(b, {-0.5f, 2.25f, 0.5f});
+    g.sim.set_body_velocity(b, {0.0f, 0.0f, 0.0f});
+    g.run(2);
+    EXPECT_NE(g.sim.surface(roof).snow, roof_snow);
 }
 
 TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
@@ -220,6 +346,14 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
               std::string::npos);
     EXPECT_NE(error_of([&] { g.sim.add_body(ball(0.0f, 0.0f, 1.0e6f)); }).find("body.radius"),
               std::string::npos);
+    for (const float bad : {NAN, -0.1f, 1.5f}) {
+        BodyDef d = ball(0.0f, 1.0f, 0.2f);
+        d.compaction = bad;
+        EXPECT_EQ(validate(d).field, "body.compaction") << bad;
+        EXPECT_NE(error_of([&] { g.sim.add_body(d); }).find("body.compaction"), std::string::npos)
+            << bad;
+    }
+    EXPECT_EQ(g.sim.state_hash(), before);
     const Entity b = g.sim.add_body(ball(0.0f, 1.0f, 0.2f));
     const std::uint64_t with_body = g.sim.state_hash();
     EXPECT_NE(error_of([&] {
