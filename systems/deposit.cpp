@@ -189,8 +189,7 @@ void deposit_end(World& w, const DepositTick& d) {
             const std::size_t dst =
                 roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];
-            s.mark_dirty(static_cast<std::uint32_t>(dst % s.nx),
-                         static_cast<std::uint32_t>(dst / s.nx));
+            s.mark_dirty(dst);
             pool.release(r.slot);
             ++counters.landed;
             counters.rolled += dst != r.cell ? 1 : 0;
