@@ -7,6 +7,7 @@
 #include "game/snow_readout.hpp"
 #include "game/time_scale.hpp"
 #include "game/walker.hpp"
+#include "tests/support/even_snow.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,11 +34,7 @@ struct SnowyYard {
         d.cell = cell;
         d.spills = false;
         ground = sim.add_surface(d);
-        for (std::uint32_t iz = 0; iz < sim.surface(ground).nz; ++iz) {
-            for (std::uint32_t ix = 0; ix < sim.surface(ground).nx; ++ix) {
-                sim.add_settled_snow(ground, ix, iz, depth_units);
-            }
-        }
+        test::snow_every_cell(sim, ground, depth_units);
         // A wall as a box with a surface on its top: its bare top is 1 m up.
         const Aabb wall{{2.0f, 0.0f, -5.0f}, {3.0f, 1.0f, 5.0f}};
         SurfaceDef top;
@@ -122,11 +119,7 @@ Entity add_roof(SnowyYard& y, float low, float high) {
     top.spills = false;
     const Entity roof =
         y.sim.add_surface(top, y.sim.add_box({{-1.0f, low, -1.0f}, {1.0f, high, 1.0f}}));
-    for (std::uint32_t iz = 0; iz < y.sim.surface(roof).nz; ++iz) {
-        for (std::uint32_t ix = 0; ix < y.sim.surface(roof).nx; ++ix) {
-            y.sim.add_settled_snow(roof, ix, iz, depth_units);
-        }
-    }
+    test::snow_every_cell(y.sim, roof, depth_units);
     return roof;
 }
 

@@ -3,6 +3,7 @@
 // determinism and restore with bodies; bad input rejected.
 #include "systems/simulation.hpp"
 #include "systems/validation.hpp"
+#include "tests/support/even_snow.hpp"
 #include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
@@ -38,11 +39,7 @@ struct SnowyGround {
         d.cell = cell;
         d.spills = false;
         ground = sim.add_surface(d);
-        for (std::uint32_t iz = 0; iz < s().nz; ++iz) {
-            for (std::uint32_t ix = 0; ix < s().nx; ++ix) {
-                sim.add_settled_snow(ground, ix, iz, depth_units);
-            }
-        }
+        test::snow_every_cell(sim, ground, depth_units);
     }
     const SnowSurface& s() const { return sim.surface(ground); }
     std::uint32_t at(float x, float z) const {
@@ -306,11 +303,7 @@ TEST(Body, ABodyUnderASnowyRoofLeavesTheRoofsSnowAlone) {
     d.base_y = 2.2f;
     d.spills = false;
     const Entity roof = g.sim.add_surface(d);
-    for (std::uint32_t iz = 0; iz < g.sim.surface(roof).nz; ++iz) {
-        for (std::uint32_t ix = 0; ix < g.sim.surface(roof).nx; ++ix) {
-            g.sim.add_settled_snow(roof, ix, iz, depth_units);
-        }
-    }
+    test::snow_every_cell(g.sim, roof, depth_units);
     const std::vector<std::uint32_t> roof_snow = g.sim.surface(roof).snow;
     // A 1.7 m walker under it, and a 0.5 m ball whose top is 5 cm under the
     // roof's bare top; both cut the ground's snow, neither the roof's.

@@ -4,6 +4,7 @@
 // deterministic across threads and restore; bad settings are refused.
 #include "systems/sample_scenes.hpp"
 #include "systems/simulation.hpp"
+#include "tests/support/even_snow.hpp"
 #include "tests/support/snapshot_check.hpp"
 #include "tests/support/steady_field.hpp"
 
@@ -45,11 +46,7 @@ std::unique_ptr<Simulation> snowy_patch(float speed, bool raised, unsigned threa
     const Entity s = sim->add_surface(patch, owner);
     const SnowSurface& surface = sim->surface(s);
     const auto units = static_cast<std::uint32_t>(std::lround(snow_depth / surface.unit_height));
-    for (std::uint32_t iz = 0; iz < surface.nz; ++iz) {
-        for (std::uint32_t ix = 0; ix < surface.nx; ++ix) {
-            sim->add_settled_snow(s, ix, iz, units);
-        }
-    }
+    test::snow_every_cell(*sim, s, units);
     return sim;
 }
 

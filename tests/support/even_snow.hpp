@@ -1,0 +1,21 @@
+/// @file even_snow.hpp
+/// @brief Test support: the same settled snow in every cell of a surface.
+#pragma once
+
+#include "systems/simulation.hpp"
+
+#include <cstdint>
+
+namespace snow::test {
+
+/// Adds `units` of settled snow to every cell of surface `e`.
+inline void snow_every_cell(Simulation& sim, Entity e, std::uint32_t units) {
+    const std::uint32_t nx = sim.surface(e).nx, nz = sim.surface(e).nz;
+    for (std::uint32_t iz = 0; iz < nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < nx; ++ix) {
+            sim.add_settled_snow(e, ix, iz, units);
+        }
+    }
+}
+
+} // namespace snow::test
