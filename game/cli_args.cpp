@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 namespace snow::cli {
@@ -24,21 +25,52 @@ std::uint64_t parse_uint(std::string_view flag, std::string_view text, std::uint
     return v;
 }
 
-double parse_positive(std::string_view flag, std::string_view text, double max) {
-    const std::string s(text);
+namespace {
+
+/// `text` read whole as a number (any finite or infinite value); nullopt if it is not one.
+std::optional<double> whole_number(const std::string& text) {
     std::size_t used = 0;
     double v = 0.0;
     try {
-        v = std::stod(s, &used);
+        v = std::stod(text, &used);
     } catch (const std::exception&) {
-        used = 0;
+        return std::nullopt;
     }
-    if (s.empty() || used != s.size()) {
+    return used == text.size() ? std::optional<double>(v) : std::nullopt;
+}
+
+} // namespace
+
+double parse_positive(std::string_view flag, std::string_view text, double max) {
+    const std::string s(text);
+    const std::optional<double> parsed = whole_number(s);
+    const double v = parsed.value_or(0.0);
+    if (!parsed) {
         throw UsageError{std::string(flag) + ": expected a number, got '" + s + "'"};
     }
     if (!std::isfinite(v) || v <= 0.0 || v > max) {
         throw UsageError{std::string(flag) + ": must be > 0 and <= " + std::to_string(max) +
                          ", got " + s};
+    }
+    return v;
+}
+
+glm::vec3 parse_vec3(std::string_view flag, std::string_view text, double max_abs) {
+    glm::vec3 v{0.0f};
+    std::string_view rest = text;
+    for (int a = 0; a < 3; ++a) {
+        const std::size_t comma = a < 2 ? rest.find(',') : std::string_view::npos;
+        if (a < 2 && comma == std::string_view::npos) {
+            throw UsageError{std::string(flag) + ": expected X,Y,Z, got '" + std::string(text) +
+                             "'"};
+        }
+        const std::optional<double> x = whole_number(std::string(rest.substr(0, comma)));
+        if (!x || !std::isfinite(*x) || std::abs(*x) > max_abs) {
+            throw UsageError{std::string(flag) + ": expected X,Y,Z of numbers within +-" +
+                             std::to_string(max_abs) + ", got '" + std::string(text) + "'"};
+        }
+        v[a] = static_cast<float>(*x);
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
     }
     return v;
 }
@@ -80,6 +112,8 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
                              integrator_choices() + ")"};
         }
         o.integrator = *i;
+    } else if (f == "--wind") {
+        o.wind = parse_vec3(f, args.value(), 100.0);
     } else if (f == "--auto-snow") {
         o.auto_snow = true;
     } else {

@@ -5,6 +5,8 @@
 
 #include "game/scene/scene_loader.hpp"
 
+#include <glm/vec3.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,6 +24,10 @@ struct UsageError {
                                        std::uint64_t min, std::uint64_t max);
 /// Whole-string finite number in (0, max]; throws UsageError naming `flag`.
 [[nodiscard]] double parse_positive(std::string_view flag, std::string_view text, double max);
+
+/// Whole-string "X,Y,Z" of finite numbers, each within ±max_abs; throws
+/// UsageError naming `flag`.
+[[nodiscard]] glm::vec3 parse_vec3(std::string_view flag, std::string_view text, double max_abs);
 
 /// Walks argv; `value()` takes the argument after the current flag.
 class ArgReader {
@@ -41,13 +47,14 @@ class ArgReader {
 };
 
 /// The scene flags both apps take (--seed, --threads, --dt, --integrator,
-/// --max-flakes, --auto-snow), as their usage lines.
+/// --max-flakes, --wind, --auto-snow), as their usage lines.
 inline constexpr const char* override_usage =
     R"(  --seed S            random seed (default: the scene's)
   --threads T         worker threads, >= 1 (default: the scene's, usually 1)
   --dt SECONDS        fixed tick length, 0 < dt <= 1 (default: the scene's)
   --integrator NAME   euler | semi_implicit | exponential | rk4 | auto
   --max-flakes N      flake pool size, 1 to 16777216 (default: the scene's)
+  --wind X,Y,Z        the global wind's mean, m/s (default: the scene's)
   --auto-snow         snow on a plain scene: its meshes become colliders under a
                       snow cover, with an emitter, occlusion camera and camera
                       where the scene declares none (docs/scenes.md)

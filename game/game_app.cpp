@@ -118,6 +118,13 @@ bool Game::load() {
     }
     sim_ = std::move(r.sim);
     visuals_ = std::move(r.visuals);
+    visuals_.camera.position = opt_.look_from.value_or(visuals_.camera.position);
+    visuals_.camera.target = opt_.look_at.value_or(visuals_.camera.target);
+    if (visuals_.camera.position == visuals_.camera.target) {
+        std::fprintf(stderr, "snow_game: --look-from/--look-at: the camera's position and target "
+                             "must differ\n");
+        return false;
+    }
     walker_.reset();
     step_ = FixedStep(sim_->config().dt);
     const World& w = sim_->world();
@@ -530,8 +537,8 @@ int Game::run() {
     if (!opt_.out_dir.empty() && !window_) {
         recorder_.emplace(opt_.out_dir);
         if (opt_.contact_sheet > 0 && opt_.frames > 0) {
-            // Tiles at most 240 px wide: four to a row make a README-sized sheet.
-            sheet_.emplace(opt_.frames, opt_.contact_sheet, 4, (opt_.width + 239) / 240);
+            // Tiles at most 320 px wide: four to a row make a README-sized sheet.
+            sheet_.emplace(opt_.frames, opt_.contact_sheet, 4, (opt_.width + 319) / 320);
         }
     }
     RenderSettings settings;
@@ -613,8 +620,14 @@ void apply_timelapse(GameOptions& o) {
     o.time_scale = 64;     // 64 × 1/30 s: 2.1 simulated seconds a frame, 4.3 minutes in all
     o.snowfall = 40000.0f; // a storm: about 13 times the village's snowfall
     o.overrides.max_flakes = 400000;
-    o.camera = CameraMode::fly; // the scene's own view over the village
-    o.walk_once_at = 55;        // the walker cuts its trail through 3 cm of snow
+    // The storm blows from the south, towards the buildings' camera-facing
+    // sides: drifts grow at the garage's windward face, in view; the house's
+    // east roof slides off its eave onto the porch, which no building shelters.
+    o.overrides.wind = glm::vec3{0.0f, 0.0f, -2.5f};
+    o.camera = CameraMode::fly;
+    o.look_from = glm::vec3{0.0f, 4.5f, 8.5f};
+    o.look_at = glm::vec3{1.8f, 1.0f, -1.0f};
+    o.walk_once_at = 55; // the walker cuts its trail through 3 cm of snow
     o.contact_sheet = 8;
     o.video = true;
     o.bare_meshes = true; // white is only the simulated snow ...

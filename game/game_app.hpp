@@ -38,6 +38,8 @@ struct GameOptions {
     std::optional<std::uint64_t> walk_once_at;
     bool bare_meshes = false;            ///< meshes keep their colour: only simulated snow is white
     std::optional<float> min_snow_depth; ///< renderer: thinner snow shows the bare top (m)
+    std::optional<glm::vec3> look_from;  ///< replaces the scene camera's position
+    std::optional<glm::vec3> look_at;    ///< replaces the scene camera's target
     SceneOverrides overrides;
 };
 

@@ -27,10 +27,13 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
                       path's start until frame F, then walks the path once
   --bare-meshes       meshes keep their colour: only the simulated snow is white
   --min-snow-depth M  snow thinner than M metres fades to the bare top (default 0.002)
+  --look-from X,Y,Z   the camera's start position (default: the scene's camera)
+  --look-at X,Y,Z     the point it looks at (default: the scene's camera)
   --contact-sheet N   headless: N moments (2..16) of the run in DIR/contact_sheet.png
   --timelapse         the village storm as a headless time-lapse: --headless
                       --frames 120 --size 640x360 --quality low --time-scale 64
-                      --snowfall 40000 --max-flakes 400000 --camera fly
+                      --snowfall 40000 --max-flakes 400000 --wind 0,0,-2.5
+                      --camera fly --look-from 0,4.5,8.5 --look-at 1.8,1,-1
                       --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
                       --min-snow-depth 0.008 --out out/timelapse (flags after it
                       override these)
@@ -101,6 +104,10 @@ bool read_flag(std::string_view f, snow::cli::ArgReader& args, snow::GameOptions
         o.bare_meshes = true;
     } else if (f == "--min-snow-depth") {
         o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
+    } else if (f == "--look-from") {
+        o.look_from = parse_vec3(f, args.value(), 1.0e4);
+    } else if (f == "--look-at") {
+        o.look_at = parse_vec3(f, args.value(), 1.0e4);
     } else if (f == "--contact-sheet") {
         o.contact_sheet = static_cast<std::uint32_t>(parse_uint(f, args.value(), 2, 16));
     } else if (f == "--timelapse") {

@@ -240,7 +240,9 @@ def village(effects):
     m_wood = g.material("wood", (0.45, 0.32, 0.2))
     m_snowman = g.material("snowman", (0.95, 0.95, 0.97))
 
-    roof_cell = {"cell": 0.1, "edge_limit": 0.005}
+    # Slate sheds: a line down a roof side holding more than 3 cm slides off
+    # its eave as one slab (the west side onto the ground, the east onto the porch).
+    roof_cell = {"cell": 0.1, "edge_limit": 0.005, "slide_depth": 0.03}
     ground = g.node("ground", g.mesh("ground", box, m_ground), translation=[0.0, -0.1, 0.0],
                     scale=[20.0, 0.2, 20.0], snow=GROUND)
     walls = g.node("house walls", g.mesh("walls", box, m_wall), translation=[0.0, 1.5, 0.0],

@@ -18,7 +18,8 @@ if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
     exec "$BUILD_DIR/game/snow_game" "$@"
 fi
 # Headless, the village tells its story: a storm of four simulated minutes in
-# 120 frames (the cover deepens; the walker cuts a trail that fills again),
+# 120 frames (the cover deepens, drifts grow at the windward walls, the house's
+# roof slides onto the porch, the walker cuts a trail that fills again),
 # written as PNG frames, a contact sheet of 8 moments and, with ffmpeg, an MP4.
 OUT_DIR=${OUT_DIR:-out/timelapse}
 echo "[play] no display: rendering the village time-lapse headless into ${OUT_DIR}"

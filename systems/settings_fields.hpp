@@ -142,6 +142,7 @@ inline constexpr FieldRule<SurfaceDef> surface_fields[] = {
     {"edge_limit", &SurfaceDef::edge_limit, non_negative},
     {"spills", &SurfaceDef::spills},
     {"laplacian_limit", &SurfaceDef::laplacian_limit, positive},
+    {"slide_depth", &SurfaceDef::slide_depth, non_negative},
 };
 
 /// `cover.*` [ZCL]; max > min per axis is checked by validate().

@@ -260,6 +260,11 @@ std::uint64_t source_digest(const World& w) {
         h.value(s.edge_limit_units);
         h.value(s.laplacian_limit_units);
         h.value(s.talus_units);
+        if (s.slide_units != 0) { // a surface that never slides hashes as before the rule
+            h.value(s.slide_units);
+            h.value(s.slide_along_x);
+            h.value(s.slide_to_high);
+        }
         h.value(s.spills);
     });
     return h.digest();

@@ -74,6 +74,11 @@ SnowSurface make_surface(const SurfaceDef& def) {
     const double edge = std::round(def.edge_limit / unit_height);
     s.edge_limit_units = static_cast<std::uint32_t>(
         std::min(edge, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
+    const double slide = std::round(def.slide_depth / unit_height);
+    s.slide_units = static_cast<std::uint32_t>(
+        std::min(slide, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
+    s.slide_along_x = std::abs(def.slope_x) >= std::abs(def.slope_z);
+    s.slide_to_high = (s.slide_along_x ? def.slope_x : def.slope_z) < 0.0f;
     // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
     const double lap = std::round(def.laplacian_limit * cell * cell / unit_height);
     s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_surface_level));

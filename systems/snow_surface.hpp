@@ -29,6 +29,10 @@ struct SurfaceDef {
     float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
     bool spills = true;                 ///< false for the ground: its edges keep their snow
     float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
+    /// Tilted tops: a line of cells down the slope that holds more than this
+    /// mean depth (m) slides off its low edge as one slab (a roof shedding
+    /// its snow); 0 = it never slides. Needs a slope and spills.
+    float slide_depth = 0.0f;
 };
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
@@ -100,6 +104,11 @@ struct SnowSurface {
     /// repose over one cell: steeper snow slides down. 0 = no such rule (a
     /// declared rectangle, whose own slope is given).
     std::int64_t talus_units = 0;
+    /// Mean depth (levels) above which a line down the slope slides
+    /// (SurfaceDef::slide_depth); 0 = never.
+    std::uint32_t slide_units = 0;
+    bool slide_along_x = true; ///< the lines run along x (else z) ...
+    bool slide_to_high = true; ///< ... to their last cell (else their first): the low edge
     bool spills = true;
     /// Per cell, the edges no snow crosses (closed_all bits): a cover closes
     /// the edges at drops of its base and around void cells. Empty for a

@@ -3,13 +3,18 @@
 // border cell as new flakes just outside the surface; they fall through the
 // normal pipeline onto whatever lies below (a porch roof, the ground). A
 // cover's edges are also inside it: where its base drops by more than its
-// drop limit (eaves, a statue's shoulder, a table edge).
+// drop limit (eaves, a statue's shoulder, a table edge). A tilted surface
+// may also shed in slabs: a line of cells down its slope whose mean depth
+// passes the slide depth slides whole to its low edge and spills from there,
+// as roofs shed their snow onto whatever lies below the eave.
 #include "systems/shed.hpp"
+#include "systems/sim_config.hpp"
 #include "systems/snow_cover.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace snow {
 
@@ -48,6 +53,50 @@ void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& 
     }
 }
 
+/// A sliding slab breaks into packed clumps that fall this fast (m/s) in
+/// still air: far faster than flakes, so the wind hardly carries them off
+/// what lies below the eave.
+constexpr float slab_fall_speed = 5.0f;
+
+/// Each line down the slope, in index order, that holds more than slide_units
+/// on average slides off whole: its cells, low edge first, shed all their
+/// units as clumps just beyond the low edge (what the pool cannot take stays).
+void slide_lines(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& counters) {
+    const std::uint32_t len = s.slide_along_x ? s.nx : s.nz;
+    const std::uint32_t lines = s.slide_along_x ? s.nz : s.nx;
+    const auto cell = [&](std::uint32_t line, std::uint32_t k) { // k = 0: the low edge
+        const std::uint32_t a = s.slide_to_high ? len - 1 - k : k;
+        return s.slide_along_x ? s.index(a, line) : s.index(line, a);
+    };
+    const double out = s.slide_to_high ? 1.0 : -1.0;
+    for (std::uint32_t line = 0; line < lines; ++line) {
+        std::int64_t depth = 0;
+        for (std::uint32_t k = 0; k < len; ++k) {
+            depth += s.depth_levels(cell(line, k));
+        }
+        if (depth <= std::int64_t{s.slide_units} * len) {
+            continue;
+        }
+        const std::size_t low = cell(line, 0);
+        const auto lx = static_cast<std::uint32_t>(low % s.nx);
+        const auto lz = static_cast<std::uint32_t>(low / s.nx);
+        const ClumpStart at = s.slide_along_x ? clump_beyond(s, lx, lz, out, 0.0, k_over_m)
+                                              : clump_beyond(s, lx, lz, 0.0, out, k_over_m);
+        for (std::uint32_t k = 0; k < len; ++k) {
+            const std::size_t i = cell(line, k);
+            const std::uint32_t had = s.snow[i];
+            const std::uint32_t gone = shed_units(pool, had, at);
+            s.snow[i] -= gone;
+            s.fit_compaction(i);
+            counters.spilled_units += gone;
+            s.mark_dirty(i);
+            if (gone < had) {
+                return; // the pool is full: the rest slides when there is room
+            }
+        }
+    }
+}
+
 /// A cover's drop cells, ascending: each sheds across its drop edge.
 void spill_drops(SnowSurface& s, const SnowCover& cover, FlakePool& pool, float k_over_m,
                  SimCounters& counters) {
@@ -71,11 +120,15 @@ void spill_system(World& w) {
     auto& pool = w.resource<FlakePool>();
     auto& counters = w.resource<SimCounters>();
     const float k_over_m = clump_drag(w);
+    const float slab_k_over_m = std::abs(w.resource<SimConfig>().gravity.y) / slab_fall_speed;
     const auto* covers = w.find_pool<SnowCover>();
     auto& surfaces = w.pool<SnowSurface>();
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         SnowSurface& s = surfaces.components()[i];
         if (s.spills) {
+            if (s.slide_units != 0) {
+                slide_lines(s, pool, slab_k_over_m, counters);
+            }
             spill_border(s, pool, k_over_m, counters);
         }
         if (const SnowCover* cover = covers ? covers->find(surfaces.entities()[i]) : nullptr) {

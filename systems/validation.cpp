@@ -132,7 +132,16 @@ Invalid validate(const WindTransportDef& t) {
 }
 
 Invalid validate(const SurfaceDef& def) {
-    return check_fields("surface", surface_fields, def);
+    Invalid e = check_fields("surface", surface_fields, def);
+    if (e.empty() && def.slide_depth > 0.0f) {
+        if (def.slope_x == 0.0f && def.slope_z == 0.0f) {
+            e = {"surface.slide_depth",
+                 "needs a tilted surface (slope_x or slope_z), got a flat one"};
+        } else if (!def.spills) {
+            e = {"surface.slide_depth", "needs a surface that spills (spills is false)"};
+        }
+    }
+    return e;
 }
 
 Invalid validate(const CoverDef& def) {

@@ -235,7 +235,11 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         through_facade(prefix(d.settings.emitter.has_value()),
                        [&] { return sim->add_emitter(*s.emitter); });
     }
-    if (s.wind) {
+    if (o.wind) {
+        Wind wind = s.wind.value_or(Wind{});
+        wind.base = wind.current = *o.wind;
+        through_facade("wind (command-line override): ", [&] { sim->set_wind(wind); });
+    } else if (s.wind) {
         through_facade(declared, [&] { sim->set_wind(*s.wind); });
     }
     if (s.wind_field) {

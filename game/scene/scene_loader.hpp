@@ -34,6 +34,9 @@ struct SceneOverrides {
     /// occlusion camera, a cover, an emitter and a camera where the scene
     /// declares none (docs/scenes.md#snow-on-a-plain-scene).
     std::optional<bool> auto_snow;
+    /// Replaces the global wind's mean (m/s); the scene's random walk and
+    /// gusts stay (a scene without wind gets the default walk).
+    std::optional<glm::vec3> wind;
 };
 
 /// Either a ready simulation and its visuals (sim set, error empty) or one

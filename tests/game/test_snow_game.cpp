@@ -216,11 +216,13 @@ TEST(SnowGame, VDrawsTheWindFieldWhereTheSceneHasOne) {
 }
 
 TEST(SnowGame, BadArgumentsExitWithStatus2) {
-    for (const char* bad : {"--bogus", "--frames 0", "--size 12", "--quality ultra", "--inject 3:Z",
-                            "--inject 1:W:0", "--camera drone", "--time-scale 8", "--snowfall 0",
-                            "--contact-sheet 1", "--scene /nonexistent.gltf --headless",
-                            "--camera walk --headless --frames 1 --scene " SNOW_SOURCE_DIR
-                            "/assets/testdata/plain.gltf"}) { // plain.gltf: no snow to walk on
+    for (const char* bad :
+         {"--bogus", "--frames 0", "--size 12", "--quality ultra", "--inject 3:Z", "--inject 1:W:0",
+          "--camera drone", "--time-scale 8", "--snowfall 0", "--contact-sheet 1",
+          "--scene /nonexistent.gltf --headless", "--look-from 1,2", "--look-at 0,1,inf",
+          "--headless --frames 1 --look-from 0,1.5,-1 --look-at 0,1.5,-1",
+          "--camera walk --headless --frames 1 --scene " SNOW_SOURCE_DIR
+          "/assets/testdata/plain.gltf"}) { // plain.gltf: no snow to walk on
         EXPECT_EQ(run_game("MESA_SHADER_CACHE_DISABLE=true", bad).status, 2) << bad;
     }
 }

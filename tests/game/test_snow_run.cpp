@@ -39,10 +39,9 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
         EXPECT_TRUE(s["calls"].is_number_integer());
         EXPECT_TRUE(s["total_ms"].is_number());
     }
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"cover", "bodies", "spawn", "wind", "wind_field",
-                                        "flakes", "carve",
-                                        "wind_transport", "redistribute", "spill", "occlusion"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"cover", "bodies", "spawn", "wind", "wind_field",
+                                               "flakes", "carve", "wind_transport", "redistribute",
+                                               "spill", "occlusion"}));
 }
 
 TEST(SnowRunCli, SameHashForOneAndTwoThreads) {
@@ -53,10 +52,21 @@ TEST(SnowRunCli, SameHashForOneAndTwoThreads) {
     EXPECT_NE(one["state_hash"], other["state_hash"]);
 }
 
+TEST(SnowRunCli, WindOverrideChangesTheRunAndStaysDeterministic) {
+    const auto west = nlohmann::json::parse(run("--ticks 300 --report json").out);
+    const auto south = nlohmann::json::parse(run("--ticks 300 --report json --wind 0,0,-2.5").out);
+    const auto south2 =
+        nlohmann::json::parse(run("--ticks 300 --report json --wind 0,0,-2.5 --threads 2").out);
+    EXPECT_NE(west["state_hash"], south["state_hash"]);
+    EXPECT_EQ(south["state_hash"], south2["state_hash"]);
+    EXPECT_TRUE(south["mass"]["balanced"].get<bool>());
+}
+
 TEST(SnowRunCli, BadArgumentsExitWithStatus2) {
     for (const char* bad :
          {"--bogus", "--ticks -5", "--ticks abc", "--dt 0", "--dt -1", "--dt nan", "--threads 0",
-          "--integrator magic", "--report xml", "--ticks", "--scene /nonexistent/scene.gltf"}) {
+          "--integrator magic", "--report xml", "--ticks", "--scene /nonexistent/scene.gltf",
+          "--wind 1,2", "--wind 1,2,x", "--wind 1,2,3,4", "--wind 1000,0,0", "--wind nan,0,0"}) {
         EXPECT_EQ(run(bad).status, 2) << bad;
     }
 }

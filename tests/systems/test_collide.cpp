@@ -4,6 +4,7 @@
 #include "systems/flake_stages.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/random_streams.hpp"
+#include "tests/support/rect_surface.hpp"
 #include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
@@ -50,18 +51,6 @@ glm::vec3 pos(const Simulation& sim, std::uint32_t s) {
 glm::vec3 vel(const Simulation& sim, std::uint32_t s) {
     const FlakePool& f = sim.flakes();
     return {f.vx[s], f.vy[s], f.vz[s]};
-}
-
-/// A surface definition over [x0, x0 + sx] × [z0, z0 + sz] with its bare top at height y.
-SurfaceDef top_surface(float x0, float z0, float sx, float sz, float y) {
-    SurfaceDef d;
-    d.x0 = x0;
-    d.z0 = z0;
-    d.size_x = sx;
-    d.size_z = sz;
-    d.cell = 0.1f;
-    d.base_y = y;
-    return d;
 }
 
 TEST(Collide, SphereRemovesFlakesAndCountsTheirMassExactly) {
@@ -150,7 +139,7 @@ TEST(Collide, FastFlakeCannotTunnelThroughAThinRoof) {
     {
         Simulation sim(config(4));
         const Entity house = sim.add_box(roof);
-        sim.add_surface(top_surface(-1.0f, -1.0f, 2.0f, 2.0f, roof.max.y), house);
+        sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, roof.max.y), house);
         const std::uint32_t s = add_flake(sim, from + v * dt, v, 9);
         collide_system(InternalAccess::world(sim));
         ASSERT_TRUE(sim.flakes().is_alive(s));
@@ -166,7 +155,7 @@ TEST(Collide, FastFlakeMeetsTheFirstRoofOnItsPath) {
     // The lower roof holds snow and is listed first; the flake must still stop at the upper one.
     Simulation sim(config(4));
     const Entity lower = sim.add_box({{-1.0f, 3.0f, -1.0f}, {1.0f, 3.1f, 1.0f}});
-    sim.add_surface(top_surface(-1.0f, -1.0f, 2.0f, 2.0f, 3.1f), lower);
+    sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 3.1f), lower);
     sim.add_box({{-1.0f, 5.0f, -1.0f}, {1.0f, 5.1f, 1.0f}});
     const glm::vec3 v{0.0f, -300.0f, 0.0f};
     add_flake(sim, glm::vec3{0.0f, 6.5f, 0.0f} + v * dt, v, 3);
@@ -195,7 +184,7 @@ TEST(Collide, BoxTopWithoutSurfaceRemovesAsBareAndWithSurfaceKeepsFlakeOnTop) {
     const Aabb box{{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}};
     const Entity holder = sim.add_box(box);
     // The surface covers only the half x < 0 of the top.
-    sim.add_surface(top_surface(-1.0f, -1.0f, 1.0f, 2.0f, 1.0f), holder);
+    sim.add_surface(test::rect_surface(-1.0f, -1.0f, 1.0f, 2.0f, 1.0f), holder);
     const Aabb bare_box{{4.0f, 0.0f, -1.0f}, {6.0f, 1.0f, 1.0f}};
     sim.add_box(bare_box);
     const glm::vec3 v{0.0f, -2.0f, 0.0f};
@@ -219,7 +208,7 @@ TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
             Simulation sim(config(8));
             const Entity roof = sim.add_mesh_collider(quad);
             if (holder) {
-                sim.add_surface(top_surface(-1.0f, -1.0f, 2.0f, 2.0f, 2.0f), roof);
+                sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 2.0f), roof);
             }
             Wind w;
             w.base = w.current = {3.0f, 0.0f, 0.0f};
@@ -281,7 +270,7 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
     const std::vector<glm::vec3> tent{{2, 1, 2}, {6, 3, 4}, {2, 1, 6},
                                       {6, 3, 4}, {8, 1, 2}, {8, 1, 6}};
     const Entity mesh = sim.add_mesh_collider(tent);
-    sim.add_surface(top_surface(2.0f, 2.0f, 3.0f, 4.0f, 2.0f), mesh);
+    sim.add_surface(test::rect_surface(2.0f, 2.0f, 3.0f, 4.0f, 2.0f), mesh);
     for (std::uint32_t i = 0; i < 40; ++i) {
         const RngKey k{7, 0, i, random_stream::test};
         const glm::vec3 c{rng_range(k, 0, -9, 9), rng_range(k, 1, 0, 4), rng_range(k, 2, -9, 9)};
@@ -293,7 +282,8 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
         }
         const Entity b = sim.add_box({c - h, c + h});
         if (i % 3 == 0) {
-            sim.add_surface(top_surface(c.x - h.x, c.z - h.z, h.x, 2.0f * h.z, c.y + h.y), b);
+            sim.add_surface(test::rect_surface(c.x - h.x, c.z - h.z, h.x, 2.0f * h.z, c.y + h.y),
+                            b);
         }
     }
     sim.set_occlusion(OcclusionCamera{128, 0.0f});

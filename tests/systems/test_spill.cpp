@@ -2,6 +2,7 @@
 // falls onto the surfaces below; mass moves from settled to airborne exactly.
 #include "systems/internal_access.hpp"
 #include "systems/units.hpp"
+#include "tests/support/rect_surface.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,16 +11,10 @@
 namespace snow {
 namespace {
 
+/// A spill test's surface: its edge limit 0.01 m, 2000 units at 10 cm cells.
 SurfaceDef rect(float x0, float z0, float sx, float sz, float y, bool spills) {
-    SurfaceDef d;
-    d.x0 = x0;
-    d.z0 = z0;
-    d.size_x = sx;
-    d.size_z = sz;
-    d.cell = 0.1f;
-    d.base_y = y;
-    d.spills = spills;
-    d.edge_limit = 0.01f; // 2000 units at this cell size
+    SurfaceDef d = test::rect_surface(x0, z0, sx, sz, y, spills);
+    d.edge_limit = 0.01f;
     return d;
 }
 
