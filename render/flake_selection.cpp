@@ -16,9 +16,10 @@ namespace {
 /// Slots per block: the marks of one block stay in L1 between the two loops.
 constexpr std::uint32_t block = 1024;
 
-/// A fixed per-slot number in [0, 1) (integer hash), for stable thinning.
-float slot_fraction(std::uint32_t slot) {
-    std::uint32_t h = slot * 0x9E3779B1u;
+/// A fixed number in [0, 1) per flake (integer hash of its id), for thinning
+/// that stays put when the pool is reordered.
+float flake_fraction(std::uint32_t id) {
+    std::uint32_t h = id * 0x9E3779B1u;
     h ^= h >> 16;
     h *= 0x85EBCA6Bu;
     h ^= h >> 13;
@@ -37,11 +38,11 @@ struct Tests {
 /// keep[j] = 1 for the slots first + j (j < n) to draw: alive, inside the
 /// view frustum (clip space, with a 10% margin for sprites that straddle an
 /// edge) and, with level of detail, nearer than its distance d0 or, at
-/// distance d, with the slot's fixed fraction under (d0 / d)².
+/// distance d, with the flake's fixed fraction under (d0 / d)².
 template <bool lod>
 void mark(const float* __restrict px, const float* __restrict py, const float* __restrict pz,
-          const std::uint32_t* __restrict mass, std::uint32_t first, std::uint32_t n, const Tests t,
-          std::uint8_t* __restrict keep) {
+          const std::uint32_t* __restrict mass, const std::uint32_t* __restrict id, std::uint32_t n,
+          const Tests t, std::uint8_t* __restrict keep) {
     for (std::uint32_t j = 0; j < n; ++j) {
         const float x = px[j], y = py[j], z = pz[j];
         const float cw = t.m[0][3] * x + t.m[1][3] * y + t.m[2][3] * z + t.m[3][3];
@@ -55,7 +56,7 @@ void mark(const float* __restrict px, const float* __restrict py, const float* _
         if constexpr (lod) {
             const float dx = x - t.ex, dy = y - t.ey, dz = z - t.ez;
             const float d2 = dx * dx + dy * dy + dz * dz;
-            thinned = (d2 > t.lod2) & (slot_fraction(first + j) * d2 >= t.lod2);
+            thinned = (d2 > t.lod2) & (flake_fraction(id[j]) * d2 >= t.lod2);
         }
         keep[j] = static_cast<std::uint8_t>((mass[j] != 0) & !outside & !thinned);
     }
@@ -88,10 +89,11 @@ std::uint32_t select_flakes(const FlakePool& pool, const FlakeSelection& sel,
         const float* pz = pool.pz.data() + base;
         const float* size = pool.size.data() + base;
         const std::uint32_t* mass = pool.mass_units.data() + base;
+        const std::uint32_t* id = pool.id.data() + base;
         if (sel.lod) {
-            mark<true>(px, py, pz, mass, base, m, t, keep);
+            mark<true>(px, py, pz, mass, id, m, t, keep);
         } else {
-            mark<false>(px, py, pz, mass, base, m, t, keep);
+            mark<false>(px, py, pz, mass, id, m, t, keep);
         }
         // Written at `count` whether kept or not (one 16-byte store): count <=
         // slot, so it stays inside out, and a later kept flake overwrites it.

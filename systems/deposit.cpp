@@ -187,7 +187,7 @@ void deposit_end(World& w, const DepositTick& d) {
         for (const LandingRecord& r : chunk) {
             SnowSurface& s = surfaces[r.surface];
             const std::size_t dst =
-                roll_target(s, r.cell, {cfg.seed, tick, r.slot, random_stream::roll});
+                roll_target(s, r.cell, {cfg.seed, tick, pool.id[r.slot], random_stream::roll});
             s.snow[dst] += pool.mass_units[r.slot];
             s.mark_dirty(dst);
             pool.release(r.slot);

@@ -10,6 +10,7 @@ void FlakePool::reset(std::uint32_t capacity) {
     }
     py.assign(capacity, parked_y);
     mass_units.assign(capacity, 0);
+    id.assign(capacity, 0);
     free_stack.resize(capacity);
     // Highest slot at the bottom so slot 0 is handed out first.
     for (std::uint32_t i = 0; i < capacity; ++i) {
@@ -18,6 +19,7 @@ void FlakePool::reset(std::uint32_t capacity) {
     alive = 0;
     max_alive = 0;
     slot_end = 0;
+    next_id = 0;
 }
 
 bool FlakePool::acquire(std::uint32_t& slot) {
@@ -26,6 +28,7 @@ bool FlakePool::acquire(std::uint32_t& slot) {
     }
     slot = free_stack.back();
     free_stack.pop_back();
+    id[slot] = next_id++;
     ++alive;
     max_alive = std::max(max_alive, alive);
     slot_end = std::max(slot_end, slot + 1);

@@ -55,14 +55,18 @@ struct FlakePool {
     PoolArray<float> vx, vy, vz;
     PoolArray<float> k_over_m; ///< linear drag coefficient over mass (1/s)
     // cold
-    PoolArray<std::uint32_t> mass_units;   ///< 0 = free slot
-    PoolArray<float> size;                 ///< diameter (m), for rendering
+    PoolArray<std::uint32_t> mass_units; ///< 0 = free slot
+    PoolArray<float> size;               ///< diameter (m), for rendering
+    /// The flake's own number, kept when the pool is reordered: its random
+    /// draws are keyed by it, not by the slot it happens to be in.
+    PoolArray<std::uint32_t> id;
     std::vector<std::uint32_t> free_stack; ///< free slots; top = back()
     std::uint32_t alive = 0;
     std::uint32_t max_alive = 0; ///< high-water mark of `alive`
     /// One past the highest slot ever handed out: every alive slot is below it,
     /// so per-flake passes stop there instead of at capacity().
     std::uint32_t slot_end = 0;
+    std::uint32_t next_id = 0; ///< id of the next flake acquire() hands out (wraps at 2^32)
 
     /// Allocates all storage once; no allocation happens in a tick afterwards.
     void reset(std::uint32_t capacity);
@@ -70,7 +74,8 @@ struct FlakePool {
         return static_cast<std::uint32_t>(mass_units.size());
     }
     [[nodiscard]] bool is_alive(std::uint32_t slot) const { return mass_units[slot] != 0; }
-    /// Takes a free slot (lowest first for a fresh pool); returns false when full.
+    /// Takes a free slot (lowest first for a fresh pool) and gives it the next
+    /// id; returns false when full.
     [[nodiscard]] bool acquire(std::uint32_t& slot);
     /// Frees a slot; its mass must already be accounted for by the caller.
     void release(std::uint32_t slot);

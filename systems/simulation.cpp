@@ -2,6 +2,7 @@
 
 #include "ecs/job_pool.hpp"
 #include "systems/colliders.hpp"
+#include "systems/flake_order.hpp"
 #include "systems/jobs.hpp"
 #include "systems/limits.hpp"
 #include "systems/systems.hpp"
@@ -42,6 +43,7 @@ Simulation::Simulation(const SimConfig& config) {
     world_.set_resource<SimCounters>();
     world_.set_resource<SourceVersions>();
     world_.set_resource<FlakePool>().reset(config.max_flakes);
+    world_.set_resource<FlakeOrder>().reset(config.max_flakes);
     jobs_ = std::make_unique<JobPool>(config.threads);
     world_.set_resource<Jobs>(Jobs{jobs_.get()});
     build_schedule();
@@ -54,6 +56,7 @@ void Simulation::build_schedule() {
     const Requirement flakes = flakes_alive;
     schedule_.add("cover", cover_system, {needs<SnowCover>()});
     schedule_.add("bodies", body_system, {needs<Body>()});
+    schedule_.add("order", flake_order_system, {flakes});
     schedule_.add("spawn", spawn_system, {needs<Emitter>()});
     schedule_.add("wind", wind_system, {needs<Wind>()});
     schedule_.add("wind_field", wind_field_system, {needs<WindField>()});

@@ -61,6 +61,7 @@ void hash_pool(StateHasher& h, const FlakePool& f) {
     h.value(f.alive);
     h.value(f.max_alive);
     h.value(f.slot_end);
+    h.value(f.next_id);
     for (std::uint32_t i = 0; i < f.slot_end; ++i) {
         if (!f.is_alive(i)) {
             continue;
@@ -70,6 +71,7 @@ void hash_pool(StateHasher& h, const FlakePool& f) {
             h.value((*a)[i]);
         }
         h.value(f.mass_units[i]);
+        h.value(f.id[i]);
     }
     h.span(std::span<const std::uint32_t>(f.free_stack));
 }

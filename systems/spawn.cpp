@@ -1,6 +1,6 @@
 // spawn: inactive flakes activate [WF §4] on the top and upwind sides
 // of the simulation bounds [WF §5], with mass, size and fall speed drawn
-// from the emitter. Every draw is keyed by (seed, tick, slot, stream).
+// from the emitter. Every draw is keyed by (seed, tick, flake id, stream).
 #include "ecs/rng.hpp"
 #include "systems/emitter.hpp"
 #include "systems/flake_pool.hpp"
@@ -113,7 +113,9 @@ void spawn_system(World& w) {
             if (!pool.acquire(slot)) {
                 return; // pool full: the limit holds without allocating
             }
-            const RngKey k{cfg.seed, tick, slot, random_stream::spawn_position};
+            // Keyed by the flake's id: the draws do not depend on which slot was free.
+            const std::uint32_t id = pool.id[slot];
+            const RngKey k{cfg.seed, tick, id, random_stream::spawn_position};
             float pick = rng_uniform(k, 0) * faces.total;
             int face = 0;
             while (face < 4 && pick >= faces.w[face]) {
@@ -121,13 +123,13 @@ void spawn_system(World& w) {
                 ++face;
             }
             const glm::vec3 p = point_on_face(region, face, rng_uniform(k, 1), rng_uniform(k, 2));
-            const float u_mass = rng_uniform({cfg.seed, tick, slot, random_stream::spawn_mass});
+            const float u_mass = rng_uniform({cfg.seed, tick, id, random_stream::spawn_mass});
             const float mass_g = log_uniform(em.mass_min_g, em.mass_max_g, u_mass);
             const auto units = static_cast<std::uint32_t>(
                 std::clamp(std::lround(mass_g / (unit_kg * 1000.0)), 1l, long{max_flake_units}));
             // Bigger flakes are heavier: size follows mass through the same draw.
             const float size = em.size_min + (em.size_max - em.size_min) * u_mass;
-            const float fall = rng_range({cfg.seed, tick, slot, random_stream::spawn_velocity}, 0,
+            const float fall = rng_range({cfg.seed, tick, id, random_stream::spawn_velocity}, 0,
                                          em.fall_speed_min, em.fall_speed_max);
             pool.px[slot] = p.x;
             pool.py[slot] = p.y;

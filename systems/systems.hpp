@@ -8,18 +8,19 @@
 
 namespace snow {
 
-void cover_system(World& w);      ///< snow_cover.cpp: covers follow the geometry under them
-void body_system(World& w);       ///< body_motion.cpp: moving bodies take this tick's pose
-void spawn_system(World& w);      ///< spawn.cpp: inactive flakes activate [WF §4]
-void wind_system(World& w);       ///< wind_system.cpp: bounded random walk + gusts
-void wind_field_system(World& w); ///< wind_field_system.cpp: stable fluids around obstacles
+void cover_system(World& w);       ///< snow_cover.cpp: covers follow the geometry under them
+void body_system(World& w);        ///< body_motion.cpp: moving bodies take this tick's pose
+void flake_order_system(World& w); ///< flake_order.cpp: alive flakes sorted by column, packed
+void spawn_system(World& w);       ///< spawn.cpp: inactive flakes activate [WF §4]
+void wind_system(World& w);        ///< wind_system.cpp: bounded random walk + gusts
+void wind_field_system(World& w);  ///< wind_field_system.cpp: stable fluids around obstacles
 /// flake_pass.cpp: the three stages below on each block of flakes in turn
 /// (what a tick runs; flake_stages.hpp)
 void flake_pass_system(World& w);
-void integrate_system(World& w);  ///< integrate.cpp: gravity + drag to wind (alone: tests)
-void collide_system(World& w);    ///< collide.cpp: boxes, spheres, meshes, bounds (alone)
-void deposit_system(World& w);    ///< deposit.cpp: landing + rolling rules [ZCL §IV] (alone)
-void carve_system(World& w);      ///< carve.cpp: bodies push snow to trail rims, snowballs take it
+void integrate_system(World& w); ///< integrate.cpp: gravity + drag to wind (alone: tests)
+void collide_system(World& w);   ///< collide.cpp: boxes, spheres, meshes, bounds (alone)
+void deposit_system(World& w);   ///< deposit.cpp: landing + rolling rules [ZCL §IV] (alone)
+void carve_system(World& w);     ///< carve.cpp: bodies push snow to trail rims, snowballs take it
 void wind_transport_system(World& w); ///< wind_transport.cpp: the field's wind moves snow
 /// True when a wind field with transport is declared (wind_transport_system's need).
 [[nodiscard]] bool wind_transport_declared(const World& w);

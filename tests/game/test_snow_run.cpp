@@ -39,9 +39,9 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
         EXPECT_TRUE(s["calls"].is_number_integer());
         EXPECT_TRUE(s["total_ms"].is_number());
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"cover", "bodies", "spawn", "wind", "wind_field",
-                                               "flakes", "carve", "wind_transport", "redistribute",
-                                               "spill", "occlusion"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"cover", "bodies", "order", "spawn", "wind",
+                                               "wind_field", "flakes", "carve", "wind_transport",
+                                               "redistribute", "spill", "occlusion"}));
 }
 
 TEST(SnowRunCli, SameHashForOneAndTwoThreads) {

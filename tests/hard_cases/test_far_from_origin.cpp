@@ -2,9 +2,9 @@
 // by (10000, 0, 10000). At x ≈ 10^4 m a float's spacing is 2^-10 m ≈ 1 mm,
 // so each horizontal step v·dt (≈ 3 cm) is rounded by up to 0.5 mm and a
 // flake's path drifts by millimetres over its fall. The flakes are placed up
-// front (prefill_flakes: the same slots, masses and, to within 0.5 mm, the
-// same positions in both yards; an emitter would reuse freed slots in a
-// different order and make the two runs independent draws). Snow per cell can
+// front (prefill_flakes: the same ids, masses and, to within 0.5 mm, the
+// same positions in both yards); the pools' spatial order may put twins in
+// other slots, but their draws are keyed by id. Snow per cell can
 // then only differ where a drifted flake fell on the other side of a cell
 // border or rolled ([ZCL §IV] rules) over a different neighbour: the
 // tolerances below bound that, and the ledger balances exactly in both.
@@ -104,14 +104,23 @@ struct TwinRun {
     Diff ground, roof;
 };
 
-/// 99th percentile of the horizontal gap between each flake in flight and its twin.
+/// 99th percentile of the horizontal gap between each flake in flight and its
+/// twin (the flake of the same id: the two pools order their slots apart).
 float p99_gap(const FlakePool& a, const FlakePool& b, const glm::vec3& offset,
               std::vector<float>& scratch) {
+    constexpr std::uint32_t none = ~std::uint32_t{0};
+    std::vector<std::uint32_t> slot_of_id(b.next_id, none);
+    for (std::uint32_t j = 0; j < b.slot_end; ++j) {
+        if (b.is_alive(j)) {
+            slot_of_id[b.id[j]] = j;
+        }
+    }
     scratch.clear();
     for (std::uint32_t i = 0; i < a.slot_end; ++i) {
-        if (a.is_alive(i) && b.is_alive(i)) {
-            scratch.push_back(std::max(std::abs(b.px[i] - offset.x - a.px[i]),
-                                       std::abs(b.pz[i] - offset.z - a.pz[i])));
+        const std::uint32_t j = a.is_alive(i) && a.id[i] < b.next_id ? slot_of_id[a.id[i]] : none;
+        if (j != none) {
+            scratch.push_back(std::max(std::abs(b.px[j] - offset.x - a.px[i]),
+                                       std::abs(b.pz[j] - offset.z - a.pz[i])));
         }
     }
     if (scratch.empty()) {

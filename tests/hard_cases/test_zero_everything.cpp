@@ -4,6 +4,7 @@
 // and nothing may land (g/c = 0: the terminal velocity is exactly zero),
 // bit for bit, with every integrator.
 #include "hard_case_util.hpp"
+#include "tests/support/find_flake.hpp"
 
 #include <vector>
 
@@ -92,10 +93,12 @@ TEST(HardCaseNothing, FlakesAtRestInWeightlessStillAirNeverMoveOrLand) {
         const FlakePool& f = s.sim->flakes();
         EXPECT_EQ(f.alive, at.size());
         EXPECT_EQ(s.sim->mass().settled, 0u);
-        for (std::uint32_t i = 0; i < at.size(); ++i) {
-            ASSERT_TRUE(f.is_alive(i));
-            EXPECT_EQ(glm::vec3(f.px[i], f.py[i], f.pz[i]), at[i]) << "slot " << i;
-            EXPECT_EQ(glm::vec3(f.vx[i], f.vy[i], f.vz[i]), glm::vec3(0.0f)) << "slot " << i;
+        for (std::uint32_t id = 0; id < at.size(); ++id) { // placed first: ids 0, 1, ...
+            const auto s = test::slot_of(f, id);
+            ASSERT_TRUE(s) << "flake " << id;
+            const std::uint32_t i = *s;
+            EXPECT_EQ(glm::vec3(f.px[i], f.py[i], f.pz[i]), at[id]) << "flake " << id;
+            EXPECT_EQ(glm::vec3(f.vx[i], f.vy[i], f.vz[i]), glm::vec3(0.0f)) << "flake " << id;
         }
         EXPECT_EQ(s.sim->world().resource<MassLedger>().removed(), 0u);
     }
