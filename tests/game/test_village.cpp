@@ -121,6 +121,9 @@ TEST(VillageScene, SouthStormBuildsADriftAtTheGaragesWindwardFace) {
     const double foot = mean_ground_depth(*sim, 3.2f, 6.8f, 0.05f, 0.45f);
     const double open = mean_ground_depth(*sim, 3.2f, 6.8f, 3.0f, 6.0f);
     const double lee = mean_ground_depth(*sim, 3.2f, 6.8f, -4.5f, -3.1f);
+    RecordProperty("windward_foot_mm", std::to_string(1000.0 * foot));
+    RecordProperty("open_mm", std::to_string(1000.0 * open));
+    RecordProperty("lee_mm", std::to_string(1000.0 * lee));
     EXPECT_GT(foot, 3.0 * open) << "windward foot " << foot << " m, open ground " << open << " m";
     EXPECT_LT(lee, 0.5 * open) << "lee " << lee << " m, open ground " << open << " m";
 }
@@ -153,6 +156,8 @@ TEST(VillageScene, TheEastRoofSlidesOntoThePorch) {
     EXPECT_LT(roof.settled_units(), loaded / 10) << "the roof slid";
     // The porch lies below half of the eave (z -2.2..0.2 of -3.4..1.4).
     const std::uint64_t gained = sim->surface(porch).settled_units() - porch_before;
+    RecordProperty("slid_units", std::to_string(loaded - roof.settled_units()));
+    RecordProperty("porch_gained_units", std::to_string(gained));
     EXPECT_GT(gained, loaded / 3) << gained << " of the " << loaded << " units that slid";
 }
 
