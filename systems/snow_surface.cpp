@@ -71,12 +71,13 @@ SnowSurface make_surface(const SurfaceDef& def) {
     s.tile_dirty.assign(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), CellBox{});
     s.dirty_tiles.reserve(s.tile_dirty.size());
     // A limit beyond what a cell can hold never triggers: clamp instead of overflowing.
-    const double edge = std::round(def.edge_limit / unit_height);
-    s.edge_limit_units = static_cast<std::uint32_t>(
-        std::min(edge, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
-    const double slide = std::round(def.slide_depth / unit_height);
-    s.slide_units = static_cast<std::uint32_t>(
-        std::min(slide, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
+    const auto depth_units = [&](float metres) {
+        const double levels = std::round(metres / unit_height);
+        return static_cast<std::uint32_t>(
+            std::min(levels, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
+    };
+    s.edge_limit_units = depth_units(def.edge_limit);
+    s.slide_units = depth_units(def.slide_depth);
     s.slide_along_x = std::abs(def.slope_x) >= std::abs(def.slope_z);
     s.slide_to_high = (s.slide_along_x ? def.slope_x : def.slope_z) < 0.0f;
     // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.

@@ -5,8 +5,8 @@
 // cover's edges are also inside it: where its base drops by more than its
 // drop limit (eaves, a statue's shoulder, a table edge). A tilted surface
 // may also shed in slabs: a line of cells down its slope whose mean depth
-// passes the slide depth slides whole to its low edge and spills from there,
-// as roofs shed their snow onto whatever lies below the eave.
+// passes the slide depth sheds all its snow as clumps just beyond its low
+// edge, as roofs shed their snow onto whatever lies below the eave.
 #include "systems/shed.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_cover.hpp"
