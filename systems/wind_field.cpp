@@ -230,74 +230,110 @@ void divergence(const WindField& f, std::vector<float>& out) {
     });
 }
 
+/// Cell (i, j, k) of the centre lattice at P = i + px·j + px·py·k, px and
+/// py the lattice's first two dims rounded up to odd: P's parity is then the
+/// cell's colour (i + j + k) & 1, and a colour is one dense array at P / 2
+/// (ColourSplit in wind_field_solver.hpp). A neighbour P + d of a cell of
+/// colour c sits in the other colour's array at P / 2 + ((c + d) >> 1).
+std::int32_t odd_up(std::int32_t n) {
+    return n | 1;
+}
+
+/// Row pieces of the split: a row's cells 1, 3, 5, … are `odd_i` of one
+/// colour array and its cells 2, 4, 6, … `even_i` of the other, both
+/// contiguous there. Separate restrict pointers let both copies vectorise.
+void deinterleave(const float* __restrict row, float* __restrict odd_i, float* __restrict even_i,
+                  std::int32_t pairs) {
+    for (std::int32_t t = 0; t < pairs; ++t) {
+        odd_i[t] = row[1 + 2 * t];
+        even_i[t] = row[2 + 2 * t];
+    }
+}
+void interleave(float* __restrict row, const float* __restrict odd_i,
+                const float* __restrict even_i, std::int32_t pairs) {
+    for (std::int32_t t = 0; t < pairs; ++t) {
+        row[1 + 2 * t] = odd_i[t];
+        row[2 + 2 * t] = even_i[t];
+    }
+}
+
+/// Copies the updated cells of `full` (centre lattice) into the two colour
+/// arrays of `split`, or back with `to_full`; cells outside stay as they are.
+/// Cell i of a row has P = base + i, in colour (base + i) & 1 at (base + i) / 2.
+void split_copy(const Lattice& c, const ColourSplit& split, std::vector<float>& full,
+                std::vector<float> (&colours)[2], bool to_full) {
+    const std::int32_t cells = c.dim[0] - 2, pairs = cells / 2;
+    const bool odd_count = (cells & 1) != 0; // then cell `cells` ends the row alone
+    for (std::int32_t k = 1; k < c.dim[2] - 1; ++k) {
+        for (std::int32_t j = 1; j < c.dim[1] - 1; ++j) {
+            const std::int32_t base = split.px * j + split.plane * k;
+            float* row = full.data() + c.index(0, j, k);
+            float* odd_i = colours[(base + 1) & 1].data() + ((base + 1) >> 1);
+            float* even_i = colours[base & 1].data() + ((base + 2) >> 1);
+            if (to_full) {
+                interleave(row, odd_i, even_i, pairs);
+                if (odd_count) {
+                    row[cells] = odd_i[pairs];
+                }
+            } else {
+                deinterleave(row, odd_i, even_i, pairs);
+                if (odd_count) {
+                    odd_i[pairs] = row[cells];
+                }
+            }
+        }
+    }
+}
+
+/// One colour's red-black SOR update over [begin, end) of its array; every
+/// neighbour is in the other colour's array. In the run lie ghosts, padding
+/// and solid cells with φ = rhs = inv = 0: φ + ω·(0·(…) − 0) stays +0 there
+/// (a sum of +0 and −0 is +0), so they need no mask.
+void sweep_colour(float* __restrict p, const float* __restrict other, const float* __restrict rhs,
+                  const float* __restrict inv, std::int32_t begin, std::int32_t end_at,
+                  const std::int32_t (&nb)[6], float cx, float cy, float cz) {
+    for (std::int32_t m = begin; m < end_at; ++m) {
+        const float sum = cx * (other[m + nb[0]] + other[m + nb[1]]) +
+                          cy * (other[m + nb[2]] + other[m + nb[3]]) +
+                          cz * (other[m + nb[4]] + other[m + nb[5]]);
+        p[m] = p[m] + sor_omega * (inv[m] * (sum - rhs[m]) - p[m]);
+    }
+}
+
 /// Red-black SOR on Σ c_a (φ_nb − φ) = div over the open cells. Solid cells
 /// and ghosts hold φ = 0; a neighbour with no flux through the face between
 /// (solid, floor, inflow side) is left out of inv_diag, so its 0 adds nothing.
-struct Sweeper {
-    const Lattice& c;
-    float* p;
-    const float* rhs;
-    const float* inv;
-    const std::vector<float>* omega_planes; ///< [2]
-    float* out;                             ///< one plane
-    float cx, cy, cz;
-
-    /// One colour over plane k (padded index), as one contiguous run from
-    /// its first open cell to its last (so it vectorises with few loop
-    /// starts), into a plane buffer: ω in the lanes of the colour, 0 in the
-    /// others and in the ghost columns the run crosses. Those compute
-    /// φ + 0·(…) = φ, bit for bit (φ is never −0: it starts at +0, and x + y
-    /// is −0 only when both are). The lanes of the colour read only the
-    /// other colour, so this is the strided red-black update, exactly.
-    void plane(std::int32_t k, std::int32_t colour) const {
-        const std::int32_t sy = c.stride(1), sz = c.stride(2);
-        const std::int32_t first_cell = c.index(1, 1, 0),
-                           last_cell = c.index(c.dim[0] - 2, c.dim[1] - 2, 0);
-        const std::int32_t base = k * sz;
-        const float* omega = omega_planes[(k + colour) & 1].data();
-        const float* at = p + base;
-        const float* r = rhs + base;
-        const float* d = inv + base;
-        for (std::int32_t i = first_cell; i <= last_cell; ++i) {
-            const float sum = cx * (at[i - 1] + at[i + 1]) + cy * (at[i - sy] + at[i + sy]) +
-                              cz * (at[i - sz] + at[i + sz]);
-            out[i] = at[i] + omega[i] * (d[i] * (sum - r[i]) - at[i]);
-        }
-        std::copy(out + first_cell, out + last_cell + 1, p + base + first_cell);
-    }
-};
-
-/// `sweeps` red-black sweeps, pipelined along z so the pressure passes
-/// through the cache once instead of twice per sweep: at front K, sweep s
-/// updates colour 0 of plane K − 2s, then colour 1 of plane K − 2s − 1. Every
-/// update then reads exactly the values the plain order (all of colour 0,
-/// then all of colour 1, sweep after sweep) gives it: colour 0 of plane k
-/// needs sweep s − 1's colour 1 on planes k ± 1 (done at this front or
-/// before) and not yet sweep s's (done later); colour 1 of plane k needs
-/// sweep s's colour 0 on planes k ± 1 (done at this front or before).
+/// Each sweep updates colour 1 (odd i + j + k), then colour 0, each colour
+/// reading only the other: the same arithmetic per cell as a strided sweep
+/// in the lattice, on dense arrays with no lanes of the other colour. (The
+/// six arrays fit in L2 at 64×16×64; sweeps pipelined along z were slower.)
 void pressure_sweeps(WindField& f, WindFieldSolver& s, std::uint32_t sweeps) {
-    const Sweeper w{f.centre,
-                    f.pressure.data(),
-                    s.divergence.data(),
-                    s.inv_diag.data(),
-                    s.omega_planes,
-                    s.plane.data(),
-                    f.inv_cell.x * f.inv_cell.x,
-                    f.inv_cell.y * f.inv_cell.y,
-                    f.inv_cell.z * f.inv_cell.z};
-    const auto depth = static_cast<std::int32_t>(sweeps);
-    const std::int32_t planes = end(f.centre, 2); // planes 1 .. planes - 1
-    for (std::int32_t front = 1; front < planes + 2 * depth; ++front) {
-        for (std::int32_t sweep = 0; sweep < depth; ++sweep) {
-            const std::int32_t k = front - 2 * sweep;
-            if (k >= 1 && k < planes) {
-                w.plane(k, 0);
+    const Lattice& c = f.centre;
+    ColourSplit& split = s.split;
+    split_copy(c, split, f.pressure, split.pressure, false);
+    split_copy(c, split, s.divergence, split.rhs, false);
+    const float cx = f.inv_cell.x * f.inv_cell.x, cy = f.inv_cell.y * f.inv_cell.y,
+                cz = f.inv_cell.z * f.inv_cell.z;
+    // The runs from cell (1, 1, 1) to cell (n - 1) of each colour.
+    const std::int32_t first_cell = split.px + split.plane + 1;
+    const std::int32_t last_cell =
+        (c.dim[0] - 2) + split.px * (c.dim[1] - 2) + split.plane * (c.dim[2] - 2);
+    const std::int32_t step[3] = {1, split.px, split.plane};
+    for (std::uint32_t sweep = 0; sweep < sweeps; ++sweep) {
+        for (const int colour : {1, 0}) {
+            std::int32_t nb[6];
+            for (int a = 0; a < 3; ++a) {
+                nb[2 * a] = (colour - step[a]) >> 1;
+                nb[2 * a + 1] = (colour + step[a]) >> 1;
             }
-            if (k - 1 >= 1 && k - 1 < planes) {
-                w.plane(k - 1, 1);
-            }
+            const std::int32_t begin = (first_cell + ((first_cell + colour) & 1)) >> 1;
+            const std::int32_t end_at = ((last_cell - ((last_cell + colour) & 1)) >> 1) + 1;
+            sweep_colour(split.pressure[colour].data(), split.pressure[1 - colour].data(),
+                         split.rhs[colour].data(), split.inv_diag[colour].data(), begin, end_at, nb,
+                         cx, cy, cz);
         }
     }
+    split_copy(c, split, f.pressure, split.pressure, true);
 }
 
 /// u −= ∇φ on every face the sweeps' φ reaches (inflow and wall faces are
@@ -368,20 +404,16 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
         }
     });
     s.diag_sides = sides;
-    // ω where (i + j + parity) is odd in the cells of a plane, 0 elsewhere.
-    const std::size_t plane =
-        static_cast<std::size_t>(c.dim[0]) * static_cast<std::size_t>(c.dim[1]);
-    s.plane.assign(plane, 0.0f);
-    for (int parity = 0; parity < 2; ++parity) {
-        s.omega_planes[parity].assign(plane, 0.0f);
-        for (std::int32_t j = 1; j < end(c, 1); ++j) {
-            for (std::int32_t i = 1; i < end(c, 0); ++i) {
-                const bool colour = ((i + j + parity) & 1) != 0;
-                s.omega_planes[parity][static_cast<std::size_t>(c.index(i, j, 0))] =
-                    colour ? sor_omega : 0.0f;
-            }
-        }
+    ColourSplit& split = s.split;
+    split.px = odd_up(c.dim[0]);
+    split.plane = split.px * odd_up(c.dim[1]);
+    const auto size = static_cast<std::size_t>((split.plane * c.dim[2] + 1) / 2);
+    for (int colour = 0; colour < 2; ++colour) {
+        split.pressure[colour].assign(size, 0.0f);
+        split.rhs[colour].assign(size, 0.0f);
+        split.inv_diag[colour].assign(size, 0.0f);
     }
+    split_copy(c, split, s.inv_diag, split.inv_diag, false);
 }
 
 /// Adds a change of the inflow to the whole field. Incompressible air

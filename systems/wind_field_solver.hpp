@@ -23,6 +23,15 @@ enum InflowSide : std::uint8_t {
 /// The sides a wind blows in through: those it points away from.
 [[nodiscard]] std::uint8_t inflow_sides(const glm::vec3& wind);
 
+/// The pressure sweeps' arrays with each colour (i + j + k) & 1 of the
+/// centre lattice dense (layout in wind_field.cpp, odd_up): the pressure
+/// while the sweeps run, their right-hand side and the inverse diagonal.
+struct ColourSplit {
+    std::int32_t px = 0;    ///< row length: the lattice's x dim, rounded up to odd
+    std::int32_t plane = 0; ///< px · the lattice's y dim rounded up to odd
+    std::vector<float> pressure[2], rhs[2], inv_diag[2];
+};
+
 /// World resource beside a WindField: what the geometry makes of the grid
 /// (rebuilt when SourceVersions::solids changes) and buffers reused every step.
 /// Everything here follows from the geometry and the field's state.
@@ -33,11 +42,8 @@ struct WindFieldSolver {
     std::vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
     std::vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
     std::uint8_t diag_sides = 0xff;      ///< inflow sides inv_diag was built for
-    /// Per cell of one plane, for (plane + colour) even and odd: the SOR
-    /// factor where the cell is of the colour being swept, else 0.
-    std::vector<float> omega_planes[2];
-    std::vector<float> plane;       ///< one plane of new pressure
-    std::vector<float> advected[3]; ///< semi-Lagrangian output, swapped with the velocity
+    ColourSplit split;                   ///< the sweeps' arrays, by colour
+    std::vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
     std::vector<float> divergence;
 };
 
