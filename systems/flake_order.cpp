@@ -10,6 +10,7 @@
 // alone, so it is the same for any thread count and after a restore.
 #include "systems/flake_order.hpp"
 
+#include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/systems.hpp"
 
@@ -20,7 +21,8 @@ namespace snow {
 
 namespace {
 
-constexpr std::uint32_t free_slot = ~std::uint32_t{0};
+/// The key of a free slot: one past the last column.
+constexpr std::uint32_t free_key = flake_order_bins * flake_order_bins;
 
 /// Column (0 .. bins − 1) of coordinate u given the grid's start and 1/width;
 /// outside, infinite or NaN clamps to the nearest end (NaN: 0).
@@ -30,25 +32,36 @@ std::uint32_t column(float u, float start, float inv_width) {
     return !(t >= 1.0f) ? 0u : (t >= last ? flake_order_bins - 1 : static_cast<std::uint32_t>(t));
 }
 
-/// a[new slot] = a[old slot] for every alive slot below `end`.
+/// a[new slot] = a[old slot] for the `alive` new slots, read through
+/// `source` (sequential writes; the reads gather) into the spare, whose
+/// other slots up to its dirty end are then set to `free` (the pool's free
+/// slots hold what release() and reset() leave); then the two trade buffers.
 template <typename T>
-void permute(PoolArray<T>& a, FlakeOrder& o, std::uint32_t end, std::uint32_t alive) {
-    for (std::uint32_t s = 0; s < end; ++s) {
-        if (o.dest[s] != free_slot) {
-            o.moved[o.dest[s]] = std::bit_cast<std::uint32_t>(a[s]);
-        }
-    }
+void permute(PoolArray<T>& a, SpareArray<T>& spare, const std::vector<std::uint32_t>& source,
+             std::uint32_t end, std::uint32_t alive, T free) {
+    T* __restrict out = spare.buffer.data();
+    const T* __restrict in = a.data();
+    const std::uint32_t* __restrict from = source.data();
     for (std::uint32_t i = 0; i < alive; ++i) {
-        a[i] = std::bit_cast<T>(o.moved[i]);
+        out[i] = in[from[i]];
     }
+    std::fill(out + alive, out + std::max(alive, spare.dirty_end), free);
+    a.swap(spare.buffer);
+    spare.dirty_end = end; // the old order: from `end` on it holds free values
 }
 
 } // namespace
 
 void FlakeOrder::reset(std::uint32_t capacity) {
-    counts.assign(static_cast<std::size_t>(flake_order_bins) * flake_order_bins + 1, 0);
+    counts.assign(static_cast<std::size_t>(free_key) + 2, 0);
     dest.assign(capacity, 0);
-    moved.assign(capacity, 0);
+    source.assign(capacity, 0);
+    for (SpareArray<float>* spare : {&zeros[0], &zeros[1], &heights}) {
+        spare->buffer.assign(capacity, 0.0f);
+        spare->dirty_end = capacity;
+    }
+    words.buffer.assign(capacity, 0);
+    words.dirty_end = capacity;
 }
 
 void flake_order_system(World& w) {
@@ -61,37 +74,44 @@ void flake_order_system(World& w) {
     const float inv_x = static_cast<float>(flake_order_bins) / (bounds.max.x - bounds.min.x);
     const float inv_z = static_cast<float>(flake_order_bins) / (bounds.max.z - bounds.min.z);
     const std::uint32_t end = f.slot_end;
+    // Keys first, in a loop of its own that vectorises: free slots sort after
+    // every column (and land at or past `alive`, where nothing reads them).
+    const float* px = f.px.data();
+    const float* pz = f.pz.data();
+    const std::uint32_t* mass = f.mass_units.data();
+    std::uint32_t* key = o.dest.data();
+    for (std::uint32_t s = 0; s < end; ++s) {
+        const std::uint32_t c = column(pz[s], bounds.min.z, inv_z) * flake_order_bins +
+                                column(px[s], bounds.min.x, inv_x);
+        key[s] = mass[s] != 0 ? c : free_key;
+    }
     std::fill(o.counts.begin(), o.counts.end(), 0u);
     for (std::uint32_t s = 0; s < end; ++s) {
-        if (!f.is_alive(s)) {
-            o.dest[s] = free_slot;
-            continue;
-        }
-        const std::uint32_t c = column(f.pz[s], bounds.min.z, inv_z) * flake_order_bins +
-                                column(f.px[s], bounds.min.x, inv_x);
-        o.dest[s] = c;
-        ++o.counts[c + 1];
+        ++o.counts[key[s] + 1];
     }
     for (std::size_t c = 1; c < o.counts.size(); ++c) {
         o.counts[c] += o.counts[c - 1];
     }
     for (std::uint32_t s = 0; s < end; ++s) { // in slot order: the sort is stable
-        if (o.dest[s] != free_slot) {
-            o.dest[s] = o.counts[o.dest[s]]++;
-        }
+        o.source[o.counts[key[s]]++] = s;
     }
     const std::uint32_t alive = f.alive;
-    for (auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
-        permute(*a, o, end, alive);
-    }
-    permute(f.mass_units, o, end, alive);
-    permute(f.id, o, end, alive);
-    // The slots above the packed flakes are free, as release() leaves them.
-    for (std::uint32_t i = alive; i < end; ++i) {
-        f.mass_units[i] = 0;
-        f.vx[i] = f.vy[i] = f.vz[i] = 0.0f;
-        f.py[i] = FlakePool::parked_y;
-    }
+    // Two halves of about equal work, each with its own spare buffers, for
+    // the two cores when the pool is large (any split gives the same arrays).
+    for_tasks(w, 2, end, [&](std::size_t half) {
+        if (half == 0) {
+            for (auto* a : {&f.px, &f.pz, &f.vx, &f.vy, &f.vz}) {
+                permute(*a, o.zeros[0], o.source, end, alive, 0.0f);
+            }
+            return;
+        }
+        for (auto* a : {&f.k_over_m, &f.size}) {
+            permute(*a, o.zeros[1], o.source, end, alive, 0.0f);
+        }
+        permute(f.py, o.heights, o.source, end, alive, FlakePool::parked_y);
+        permute(f.mass_units, o.words, o.source, end, alive, 0u);
+        permute(f.id, o.words, o.source, end, alive, 0u);
+    });
     // Free stack: slots never handed out (end .. capacity − 1) lie at its
     // bottom, highest first; the freed ones follow, so alive is taken next.
     f.free_stack.resize(f.capacity() - end);

@@ -16,12 +16,27 @@ inline constexpr std::uint64_t flake_order_every = 64;
 /// Columns of the ordering grid over the bounds, along x and along z.
 inline constexpr std::uint32_t flake_order_bins = 256;
 
+/// A buffer the size of a pool array. Every pool array holds its free value
+/// from slot_end on; a buffer traded away by an ordering keeps that from
+/// the `end` it was ordered at, so only the slots below need resetting when
+/// it becomes a pool array again.
+template <typename T>
+struct SpareArray {
+    PoolArray<T> buffer;
+    std::uint32_t dirty_end = 0; ///< slots from here on hold the free value
+};
+
 /// World resource: the ordering's scratch, sized with the pool, so no tick
 /// allocates. Derived data: neither hashed nor saved.
 struct FlakeOrder {
     std::vector<std::uint32_t> counts; ///< per column, then the running offsets
-    std::vector<std::uint32_t> dest;   ///< per slot: its column, then its new slot
-    PoolArray<std::uint32_t> moved;    ///< one array of the pool, in its new order
+    std::vector<std::uint32_t> dest;   ///< per slot: its column (or free)
+    std::vector<std::uint32_t> source; ///< per new slot: the slot its flake comes from
+    /// Where the new order of a pool array is written before the two trade
+    /// buffers: for the float arrays but py (free value 0; one per half of
+    /// the work, see flake_order_system), for py, and for mass and id.
+    SpareArray<float> zeros[2], heights;
+    SpareArray<std::uint32_t> words;
     void reset(std::uint32_t capacity);
 };
 

@@ -42,4 +42,21 @@ inline void for_chunks(World& w, std::size_t n, std::size_t grain, const JobPool
     }
 }
 
+/// Runs task(0) .. task(count − 1), independent of each other, on the
+/// world's pool when `items` (the work they share) is at least its
+/// min_items, else one after another on this thread. (The pool's function
+/// holds one reference, so nothing is allocated.)
+template <typename Task>
+void for_tasks(World& w, std::size_t count, std::size_t items, const Task& task) {
+    const Jobs* jobs = w.try_resource<Jobs>();
+    if (jobs != nullptr && jobs->pool != nullptr && items >= jobs->min_items) {
+        const JobPool::ChunkFn fn = [&task](std::size_t t, std::size_t, std::size_t) { task(t); };
+        jobs->pool->parallel_for(count, 1, fn);
+        return;
+    }
+    for (std::size_t t = 0; t < count; ++t) {
+        task(t);
+    }
+}
+
 } // namespace snow

@@ -6,6 +6,7 @@
 #include "systems/internal_access.hpp"
 #include "systems/sample_scenes.hpp"
 #include "systems/systems.hpp"
+#include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,11 +42,28 @@ std::uint32_t column_of(float x, float z) {
     return col(z) * flake_order_bins + col(x);
 }
 
-TEST(FlakeOrder, PacksTheAliveFlakesByColumnStablyAndKeepsEachOnesData) {
+/// Every slot from the alive count on holds what reset() and release() leave.
+void expect_free_from(const FlakePool& f, std::uint32_t from) {
+    for (std::uint32_t s = from; s < f.capacity(); ++s) {
+        ASSERT_EQ(f.mass_units[s], 0u) << "slot " << s;
+        ASSERT_EQ(f.py[s], FlakePool::parked_y) << "slot " << s;
+        for (const float v :
+             {f.px[s], f.pz[s], f.vx[s], f.vy[s], f.vz[s], f.k_over_m[s], f.size[s]}) {
+            ASSERT_EQ(v, 0.0f) << "slot " << s;
+        }
+        ASSERT_EQ(f.id[s], 0u) << "slot " << s;
+    }
+}
+
+class FlakeOrderThreads : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(FlakeOrderThreads, PacksTheAliveFlakesByColumnStablyAndKeepsEachOnesData) {
     SimConfig c;
     c.bounds = {{-8.0f, -1.0f, -8.0f}, {8.0f, 8.0f, 8.0f}};
     c.max_flakes = 4096;
+    c.threads = GetParam();
     Simulation sim(c);
+    test::share_work_at_any_size(sim); // both halves of the move on the pool
     for (std::uint32_t n = 0; n < 3000; ++n) {
         FlakeSpec f;
         const RngKey k{5, 0, n, 0};
@@ -79,6 +97,7 @@ TEST(FlakeOrder, PacksTheAliveFlakesByColumnStablyAndKeepsEachOnesData) {
         ASSERT_TRUE(pool.is_alive(s)) << "slot " << s;
     }
     EXPECT_EQ(flakes_by_id(pool), before) << "every flake kept its data and id";
+    expect_free_from(pool, alive);
     for (std::uint32_t s = 1; s < alive; ++s) {
         const std::uint32_t a = column_of(pool.px[s - 1], pool.pz[s - 1]);
         const std::uint32_t b = column_of(pool.px[s], pool.pz[s]);
@@ -98,7 +117,22 @@ TEST(FlakeOrder, PacksTheAliveFlakesByColumnStablyAndKeepsEachOnesData) {
     for (std::size_t k = 0; k < got.size(); ++k) {
         ASSERT_EQ(got[k], alive + k);
     }
+    // Again with fewer flakes: the buffers the first ordering traded away
+    // come back as pool arrays, and their old flakes must not show.
+    for (const std::uint32_t s : got) {
+        pool.release(s);
+    }
+    for (std::uint32_t s = 0; s < alive; s += 2) {
+        pool.release(s);
+    }
+    const auto fewer = flakes_by_id(pool);
+    flake_order_system(w);
+    EXPECT_EQ(pool.alive, alive / 2);
+    EXPECT_EQ(flakes_by_id(pool), fewer);
+    expect_free_from(pool, pool.alive);
 }
+
+INSTANTIATE_TEST_SUITE_P(OneAndTwo, FlakeOrderThreads, ::testing::Values(1u, 2u));
 
 TEST(FlakeOrder, RestoreAcrossAnOrderingTickReplaysExactly) {
     // The sample yard, snowing, orders its pool at ticks 64 and 128.
