@@ -64,6 +64,12 @@ class Game {
     [[nodiscard]] glm::vec3 move_input() const;
     void read_input(float seconds);
     void advance(double seconds);
+    /// The player's walk this frame: W A S D relative to the view (zero
+    /// outside the walk camera), at most unit length.
+    [[nodiscard]] glm::vec2 walk_input() const;
+    /// One tick as the player has it, run or stepped: the walker (and its
+    /// snowball) moves, along its route once that has started, then the world.
+    void tick_once(const glm::vec2& walk);
     void frame_output();
     void report();
     void say(const std::string& message);
@@ -225,7 +231,7 @@ void Game::apply(Action a) {
         break;
     case Action::step:
         if (paused_) {
-            sim_->tick();
+            tick_once(walk_input());
             say("stepped to tick " + std::to_string(sim_->tick_count()));
         }
         break;
@@ -363,6 +369,28 @@ void Game::read_input(float seconds) {
     camera_->update(in, seconds);
 }
 
+glm::vec2 Game::walk_input() const {
+    glm::vec2 walk(0.0f);
+    if (mode_ == CameraMode::walk) {
+        const glm::vec3 m = move_input();
+        const glm::vec2 f = camera_->facing();
+        walk = glm::vec2(-f.y, f.x) * m.x + f * m.z; // right, forward
+        if (glm::length(walk) > 1.0f) {
+            walk = glm::normalize(walk);
+        }
+    }
+    return walk;
+}
+
+void Game::tick_once(const glm::vec2& walk) {
+    if (walker_) {
+        const bool on_route = route_ && frame_ >= *opt_.walk_once_at;
+        // Also rolls the snowball on.
+        walker_->before_tick(*sim_, on_route ? route_->direction(*sim_, *walker_) : walk);
+    }
+    sim_->tick();
+}
+
 void Game::advance(double seconds) {
     if (paused_) {
         ticks_last_frame_ = 0;
@@ -376,26 +404,13 @@ void Game::advance(double seconds) {
                 : static_cast<std::uint64_t>(std::max(1l, std::lround(1.0 / (30.0 * dt))));
     const std::uint64_t ticks = time_scale_.ticks(due);
     ticks_capped_ = time_scale_.capped(due);
-    glm::vec2 walk(0.0f);
-    if (mode_ == CameraMode::walk) {
-        const glm::vec3 m = move_input();
-        const glm::vec2 f = camera_->facing();
-        walk = glm::vec2(-f.y, f.x) * m.x + f * m.z; // right, forward
-        if (glm::length(walk) > 1.0f) {
-            walk = glm::normalize(walk);
-        }
-    }
-    const bool on_route = route_ && walker_ && frame_ >= *opt_.walk_once_at;
-    if (on_route && frame_ == *opt_.walk_once_at) {
+    const glm::vec2 walk = walk_input();
+    if (route_ && walker_ && frame_ == *opt_.walk_once_at) {
         say("the walker sets off, once round its path");
     }
     const auto t0 = Clock::now();
     for (std::uint64_t i = 0; i < ticks; ++i) {
-        if (walker_) {
-            // Also rolls the snowball on.
-            walker_->before_tick(*sim_, on_route ? route_->direction(*sim_, *walker_) : walk);
-        }
-        sim_->tick();
+        tick_once(walk);
     }
     if (window_) {
         time_scale_.took(ticks, std::chrono::duration<double>(Clock::now() - t0).count());

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 #include <regex>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -95,12 +96,9 @@ std::optional<Walk> walk_report(const std::string& out) {
 }
 
 /// The village after 10 s of a heavy snowfall (a few millimetres): the
-/// player holds W from the first frame for `frames` frames and Esc ends the run.
-std::string walk_args(int frames) {
-    return "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 --warmup 300 "
-           "--inject 0:W:" +
-           std::to_string(frames) + "," + std::to_string(frames + 10) + ":ESC";
-}
+/// player holds W from the first frame and Esc ends the run.
+const std::string walk_args = "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 "
+                              "--warmup 300 --inject 0:W:90,100:ESC";
 
 void expect_trench(const snow::test::AppRun& r, double at_least_m) {
     ASSERT_EQ(r.status, 0) << r.out;
@@ -117,7 +115,7 @@ TEST(SnowGame, HeadlessPlayerWalksForwardAndLeavesATrench) {
     const std::filesystem::path dir =
         std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_walk";
     const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true",
-                                          "--headless --out " + dir.string() + " " + walk_args(90));
+                                          "--headless --out " + dir.string() + " " + walk_args);
     // Headless frames are 1/30 s: 90 frames of W at 1.4 m/s are 4.2 m.
     expect_trench(r, 4.1);
     const auto walk = walk_report(r.out);
@@ -147,19 +145,27 @@ TEST(SnowGame, HeadlessPlayerWalksUnderThePorchRoof) {
 }
 
 TEST(SnowGame, WindowUnderXvfbPlayerWalksForwardAndLeavesATrench) {
-    // A window's ticks follow the wall clock, so the walk's length depends on
-    // the frame rate (55 to 90 frames a second on the project machine: 300
-    // frames walk 4.5 to 7 m).
-    // Below some 2.5 m the trail's first metre, where the player stood
-    // through the warm-up and pushed its footprint's snow into a ring, is
-    // too much of what is sampled for the trench test to mean anything.
-    const auto run = run_game_in_xvfb(walk_args(300));
+    // A window's ticks follow the wall clock, so a walk held for some frames
+    // would be as long as the frame rate makes it (2 m here, 14 m under
+    // ASan, where the old trail had filled in again). Paused, each N steps
+    // one tick with W held: 90 ticks, 4.2 m, at any frame rate.
+    std::ostringstream args;
+    args << "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 --warmup 300 "
+            "--inject 0:P,1:W:100";
+    for (int frame = 2; frame < 92; ++frame) {
+        args << ',' << frame << ":N";
+    }
+    args << ",95:ESC";
+    const auto run = run_game_in_xvfb(args.str());
     if (!run) {
         GTEST_SKIP() << no_xvfb;
     }
     const snow::test::AppRun& r = *run;
     EXPECT_NE(r.out.find("snow_game: window"), std::string::npos) << r.out;
-    expect_trench(r, 2.5);
+    expect_trench(r, 4.1);
+    const auto walk = walk_report(r.out);
+    ASSERT_TRUE(walk);
+    EXPECT_LT(walk->walked, 4.3);
 }
 
 TEST(SnowGame, TimelapseWritesFramesAndAContactSheet) {
