@@ -15,7 +15,6 @@
 #include "systems/systems.hpp"
 
 #include <algorithm>
-#include <bit>
 
 namespace snow {
 
@@ -54,7 +53,7 @@ void permute(PoolArray<T>& a, SpareArray<T>& spare, const std::vector<std::uint3
 
 void FlakeOrder::reset(std::uint32_t capacity) {
     counts.assign(static_cast<std::size_t>(free_key) + 2, 0);
-    dest.assign(capacity, 0);
+    keys.assign(capacity, 0);
     source.assign(capacity, 0);
     for (SpareArray<float>* spare : {&zeros[0], &zeros[1], &heights}) {
         spare->buffer.assign(capacity, 0.0f);
@@ -79,7 +78,7 @@ void flake_order_system(World& w) {
     const float* px = f.px.data();
     const float* pz = f.pz.data();
     const std::uint32_t* mass = f.mass_units.data();
-    std::uint32_t* key = o.dest.data();
+    std::uint32_t* key = o.keys.data();
     for (std::uint32_t s = 0; s < end; ++s) {
         const std::uint32_t c = column(pz[s], bounds.min.z, inv_z) * flake_order_bins +
                                 column(px[s], bounds.min.x, inv_x);

@@ -30,7 +30,7 @@ struct SpareArray {
 /// allocates. Derived data: neither hashed nor saved.
 struct FlakeOrder {
     std::vector<std::uint32_t> counts; ///< per column, then the running offsets
-    std::vector<std::uint32_t> dest;   ///< per slot: its column (or free)
+    std::vector<std::uint32_t> keys;   ///< per slot: its column, or past the last when free
     std::vector<std::uint32_t> source; ///< per new slot: the slot its flake comes from
     /// Where the new order of a pool array is written before the two trade
     /// buffers: for the float arrays but py (free value 0; one per half of

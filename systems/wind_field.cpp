@@ -314,7 +314,8 @@ void pressure_sweeps(WindField& f, WindFieldSolver& s, std::uint32_t sweeps) {
     split_copy(c, split, s.divergence, split.rhs, false);
     const float cx = f.inv_cell.x * f.inv_cell.x, cy = f.inv_cell.y * f.inv_cell.y,
                 cz = f.inv_cell.z * f.inv_cell.z;
-    // The runs from cell (1, 1, 1) to cell (n - 1) of each colour.
+    // Each colour runs from its first cell at or after (1, 1, 1) to its last
+    // at or before the last updated cell (n_x, n_y, n_z).
     const std::int32_t first_cell = split.px + split.plane + 1;
     const std::int32_t last_cell =
         (c.dim[0] - 2) + split.px * (c.dim[1] - 2) + split.plane * (c.dim[2] - 2);
