@@ -1,7 +1,8 @@
 // Wind field costs (issue #15): one solver step at N × N/4 × N cells over
 // the benchmark yard (garage and snowman as obstacles); the integrate pass
-// with flakes reading the field instead of the global wind (compare
-// ns_per_flake with BM_Integrate: the difference is the sampling); and the
+// with flakes dragging towards the field's wind they hold, sampled every
+// sample_every ticks (compare ns_per_flake with BM_Integrate: the difference
+// is the sampling); and the
 // wind transport over a snow surface of which only a windy square is above
 // the threshold (the cost must follow that square, not the surface).
 #include "bench_scene.hpp"
@@ -43,11 +44,16 @@ void field_step(benchmark::State& state) {
 void integrate_in_field(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)),
                   static_cast<unsigned>(state.range(1)));
-    bw.sim->set_wind_field(field_of_side(64));
-    wind_field_system(InternalAccess::world(*bw.sim)); // the first step fills the field
+    WindFieldDef def = field_of_side(64);
+    def.sample_every = static_cast<std::uint32_t>(state.range(2));
+    bw.sim->set_wind_field(def);
+    World& w = InternalAccess::world(*bw.sim);
+    flake_order_system(w); // in spatial order, as a running simulation keeps them
+    wind_field_system(w);  // the first step fills the field
+    integrate_system(w);   // and every flake takes its first sample
     bw.start = bw.sim->save();
     for (auto _ : state) {
-        bw.step(state, [&] { integrate_system(InternalAccess::world(*bw.sim)); });
+        bw.step(state, [&] { integrate_system(w); });
     }
     bw.clock.report(state);
 }
@@ -104,6 +110,7 @@ struct WindySquare {
                 }
             }
         }
+        pack_centre(f);
         f.steps = 1;
         f.wait = 0;
     }
@@ -147,8 +154,8 @@ BENCHMARK(field_step)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(integrate_in_field)
     ->Name("BM_IntegrateInField")
-    ->ArgNames({"flakes", "threads"})
-    ->ArgsProduct({{10000, 100000, 1000000}, {1, 2}})
+    ->ArgNames({"flakes", "threads", "sample_every"})
+    ->ArgsProduct({{10000, 100000, 1000000}, {1, 2}, {1, 16, 32}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(transport)

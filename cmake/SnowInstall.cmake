@@ -18,7 +18,8 @@ set(SNOW_SIM_HEADERS
     ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
     ecs/world.hpp
     systems/body.hpp systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp
-    systems/fog.hpp systems/geometry.hpp systems/mass_ledger.hpp systems/occlusion.hpp
+    systems/fog.hpp systems/geometry.hpp systems/held_wind.hpp systems/mass_ledger.hpp
+    systems/occlusion.hpp
     systems/sim_config.hpp systems/sim_counters.hpp systems/simulation.hpp
     systems/simulation_error.hpp systems/snapshot.hpp systems/snow_cover.hpp
     systems/snow_surface.hpp systems/source_versions.hpp systems/spectral_snow.hpp

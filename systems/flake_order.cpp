@@ -10,6 +10,7 @@
 // alone, so it is the same for any thread count and after a restore.
 #include "systems/flake_order.hpp"
 
+#include "systems/held_wind.hpp"
 #include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/systems.hpp"
@@ -61,6 +62,7 @@ void FlakeOrder::reset(std::uint32_t capacity) {
     }
     words.buffer.assign(capacity, 0);
     words.dirty_end = capacity;
+    held = {};
 }
 
 void flake_order_system(World& w) {
@@ -95,6 +97,10 @@ void flake_order_system(World& w) {
         o.source[o.counts[key[s]]++] = s;
     }
     const std::uint32_t alive = f.alive;
+    if (f.holds_wind() && o.held.buffer.size() != f.capacity()) {
+        o.held.buffer.assign(f.capacity(), held_wind_unset); // once per field
+        o.held.dirty_end = f.capacity();
+    }
     // Two halves of about equal work, each with its own spare buffers, for
     // the two cores when the pool is large (any split gives the same arrays).
     for_tasks(w, 2, end, [&](std::size_t half) {
@@ -110,6 +116,11 @@ void flake_order_system(World& w) {
         permute(f.py, o.heights, o.source, end, alive, FlakePool::parked_y);
         permute(f.mass_units, o.words, o.source, end, alive, 0u);
         permute(f.id, o.words, o.source, end, alive, 0u);
+        if (f.holds_wind()) {
+            for (auto& a : f.held_wind) {
+                permute(a, o.held, o.source, end, alive, held_wind_unset);
+            }
+        }
     });
     // Free stack: slots never handed out (end .. capacity − 1) lie at its
     // bottom, highest first; the freed ones follow, so alive is taken next.

@@ -37,6 +37,8 @@ struct FlakeOrder {
     /// the work, see flake_order_system), for py, and for mass and id.
     SpareArray<float> zeros[2], heights;
     SpareArray<std::uint32_t> words;
+    /// For the held winds; sized at the first ordering with a wind field.
+    SpareArray<std::int16_t> held;
     void reset(std::uint32_t capacity);
 };
 

@@ -1,5 +1,7 @@
 #include "systems/flake_pool.hpp"
 
+#include "systems/held_wind.hpp"
+
 #include <algorithm>
 
 namespace snow {
@@ -11,6 +13,7 @@ void FlakePool::reset(std::uint32_t capacity) {
     py.assign(capacity, parked_y);
     mass_units.assign(capacity, 0);
     id.assign(capacity, 0);
+    hold_wind(holds_wind());
     free_stack.resize(capacity);
     // Highest slot at the bottom so slot 0 is handed out first.
     for (std::uint32_t i = 0; i < capacity; ++i) {
@@ -22,6 +25,16 @@ void FlakePool::reset(std::uint32_t capacity) {
     next_id = 0;
 }
 
+void FlakePool::hold_wind(bool on) {
+    for (auto& a : held_wind) {
+        if (on) {
+            a.assign(capacity(), held_wind_unset);
+        } else {
+            a = PoolArray<std::int16_t>();
+        }
+    }
+}
+
 bool FlakePool::acquire(std::uint32_t& slot) {
     if (free_stack.empty()) {
         return false;
@@ -29,6 +42,9 @@ bool FlakePool::acquire(std::uint32_t& slot) {
     slot = free_stack.back();
     free_stack.pop_back();
     id[slot] = next_id++;
+    if (holds_wind()) {
+        held_wind[0][slot] = held_wind_unset;
+    }
     ++alive;
     max_alive = std::max(max_alive, alive);
     slot_end = std::max(slot_end, slot + 1);

@@ -60,6 +60,9 @@ struct FlakePool {
     /// The flake's own number, kept when the pool is reordered: its random
     /// draws are keyed by it, not by the slot it happens to be in.
     PoolArray<std::uint32_t> id;
+    /// The wind field's wind each flake drags towards, held between samples
+    /// (systems/held_wind.hpp): one array per axis, empty without a field.
+    PoolArray<std::int16_t> held_wind[3];
     std::vector<std::uint32_t> free_stack; ///< free slots; top = back()
     std::uint32_t alive = 0;
     std::uint32_t max_alive = 0; ///< high-water mark of `alive`
@@ -74,8 +77,12 @@ struct FlakePool {
         return static_cast<std::uint32_t>(mass_units.size());
     }
     [[nodiscard]] bool is_alive(std::uint32_t slot) const { return mass_units[slot] != 0; }
+    /// With `on`, every slot's held wind is unset (each alive flake samples the
+    /// field on its next tick); without, the held winds are dropped.
+    void hold_wind(bool on);
+    [[nodiscard]] bool holds_wind() const { return !held_wind[0].empty(); }
     /// Takes a free slot (lowest first for a fresh pool) and gives it the next
-    /// id; returns false when full.
+    /// id (and an unset held wind); returns false when full.
     [[nodiscard]] bool acquire(std::uint32_t& slot);
     /// Frees a slot; its mass must already be accounted for by the caller.
     void release(std::uint32_t slot);

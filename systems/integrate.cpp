@@ -4,9 +4,10 @@
 //
 // Each flake moves in place; its old position goes to the block's PathStarts
 // (flake_stages.hpp): the path start is produced here, once, for collide and
-// deposit. With a declared wind field each flake drags towards
-// the field's wind at its path start (trilinear, WindSampler::at, sampled for
-// the whole block first) instead of the one global wind.
+// deposit. With a declared wind field each flake drags towards the field's
+// wind it holds instead of the one global wind; the block's due slots sample
+// the field at their path start first (trilinear, WindSampler::at; when:
+// held_wind.hpp).
 //
 // The guarded pass is one branch-free loop over distinct (__restrict) arrays
 // so GCC and Clang vectorise it (selects need -fno-trapping-math, set
@@ -15,6 +16,7 @@
 // bit for bit.
 #include "systems/flake_pool.hpp"
 #include "systems/flake_stages.hpp"
+#include "systems/held_wind.hpp"
 #include "systems/integrator.hpp"
 #include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
@@ -38,9 +40,9 @@ struct Params {
     float dt;
 };
 
-/// The wind a flake drags towards: the global wind, or the field's sampled
-/// for each slot of the block before the move (FieldWind). Both give it as
-/// scalars: a vec3 per lane stops GCC vectorising.
+/// The wind a flake drags towards: the global wind, or the field's wind the
+/// slot holds (HeldWind). Both give it as scalars: a vec3 per lane stops GCC
+/// vectorising.
 struct GlobalWind {
     float x, y, z;
     void at(std::size_t, float& wx, float& wy, float& wz) const {
@@ -50,25 +52,15 @@ struct GlobalWind {
     }
 };
 
-/// The field's wind at each slot's path start, sampled in a loop of its own:
-/// in the move's loop GCC cannot prove the field's gathers apart from the
-/// stores (it gives up and stays scalar), in a loop that writes only these
-/// local arrays it can.
-struct FieldWind {
-    alignas(64) float x[flake_block];
-    alignas(64) float y[flake_block];
-    alignas(64) float z[flake_block];
-
-    FieldWind(const WindSampler& s, const float* __restrict px, const float* __restrict py,
-              const float* __restrict pz, std::size_t n) {
-        for (std::size_t i = 0; i < n; ++i) {
-            s.at(px[i], py[i], pz[i], x[i], y[i], z[i]);
-        }
-    }
+/// The field's wind each slot holds (held_wind.hpp), in m/s.
+struct HeldWind {
+    const std::int16_t* x;
+    const std::int16_t* y;
+    const std::int16_t* z;
     void at(std::size_t i, float& wx, float& wy, float& wz) const {
-        wx = x[i];
-        wy = y[i];
-        wz = z[i];
+        wx = held_wind_component(x[i]);
+        wy = held_wind_component(y[i]);
+        wz = held_wind_component(z[i]);
     }
 };
 
@@ -166,6 +158,12 @@ struct IntegrateTick {
     Lanes pool{}; ///< the pool's arrays (sx/sy/sz unused: each block gets its own)
     Params q{};
     const WindField* field = nullptr; ///< null: every flake feels q.w
+    // With a field: what the held winds are sampled from, and when.
+    WindSampler sampler{};
+    std::int16_t* held[3] = {nullptr, nullptr, nullptr};
+    std::uint32_t sample_every = 1;
+    std::uint32_t phase = 0; ///< slots ≡ phase (mod sample_every) sample this tick
+    float lookahead = 0.0f;  ///< s: half a hold, how far ahead of the flake a sample is taken
     Integrator kind = Integrator::explicit_euler;
     /// One count per chunk, sized once per pool size; each chunk's blocks
     /// (one thread, one after another) add to its own entry only.
@@ -222,12 +220,82 @@ IntegrateTick& integrate_begin(World& w) {
         f.vx.data(), f.vy.data(), f.vz.data(), f.k_over_m.data(), f.mass_units.data()};
     t->q = {cfg.gravity, wind ? wind->current : glm::vec3(0.0f), cfg.dt};
     t->field = w.try_resource<WindField>();
+    if (t->field != nullptr) {
+        t->sampler = t->field->sampler();
+        for (int a = 0; a < 3; ++a) {
+            t->held[a] = f.held_wind[a].data();
+        }
+        t->sample_every = t->field->def.sample_every;
+        t->phase = static_cast<std::uint32_t>(w.resource<SimClock>().tick % t->sample_every);
+        t->lookahead = 0.5f * static_cast<float>(t->sample_every) * cfg.dt;
+    }
     t->kind = cfg.integrator;
     t->stiff.resize(
         JobPool::chunk_count(f.capacity(), flake_grain)); // allocates once per pool size
     std::fill(t->stiff.begin(), t->stiff.end(), 0u);
     return *t;
 }
+
+namespace {
+
+/// The field where the n slots from s will be halfway through the hold
+/// (their path start plus half a hold at their velocity: the hold's lag,
+/// centred), held. Sampled into local arrays first, in a loop that writes
+/// nothing else, so GCC vectorises it (its gathers cannot alias a store).
+void sample_held(const IntegrateTick& t, std::size_t s, std::size_t n) {
+    alignas(64) float wx[flake_block], wy[flake_block], wz[flake_block];
+    const float* __restrict px = t.pool.px + s;
+    const float* __restrict py = t.pool.py + s;
+    const float* __restrict pz = t.pool.pz + s;
+    const float* __restrict vx = t.pool.vx + s;
+    const float* __restrict vy = t.pool.vy + s;
+    const float* __restrict vz = t.pool.vz + s;
+    const WindSampler sampler = t.sampler;
+    const float ahead = t.lookahead;
+    for (std::size_t i = 0; i < n; ++i) {
+        sampler.steps_at(px[i] + ahead * vx[i], py[i] + ahead * vy[i], pz[i] + ahead * vz[i], wx[i],
+                         wy[i], wz[i]);
+    }
+    std::int16_t* __restrict hx = t.held[0] + s;
+    std::int16_t* __restrict hy = t.held[1] + s;
+    std::int16_t* __restrict hz = t.held[2] + s;
+    for (std::size_t i = 0; i < n; ++i) {
+        hx[i] = hold_steps(wx[i]);
+        hy[i] = hold_steps(wy[i]);
+        hz[i] = hold_steps(wz[i]);
+    }
+}
+
+/// Samples the field for the slots of the block [b, e) due this tick,
+/// before they move: the block's phase-th run of flake_block / sample_every
+/// slots (rounded up), and those made since the last tick (unset), alive or
+/// not (a free slot's sample is never read). The run is contiguous, so the
+/// sampling vectorises and its reads stay in the few columns the block's
+/// flakes lie in (flake_order.hpp); the unset are rare, found by a scan that
+/// vectorises.
+void refresh_held(const IntegrateTick& t, std::size_t b, std::size_t e) {
+    const std::size_t run = (flake_block + t.sample_every - 1) / t.sample_every;
+    const std::size_t first = b + std::size_t{t.phase} * run;
+    if (first < e) {
+        sample_held(t, first, std::min(run, e - first));
+    }
+    const std::int16_t* hx = t.held[0];
+    const std::uint32_t* mass = t.pool.mass;
+    std::uint32_t unset = 0;
+    for (std::size_t s = b; s < e; ++s) {
+        unset |= (hx[s] == held_wind_unset ? 1u : 0u) & (mass[s] != 0 ? 1u : 0u);
+    }
+    if (unset == 0) {
+        return;
+    }
+    for (std::size_t s = b; s < e; ++s) {
+        if (hx[s] == held_wind_unset && mass[s] != 0) {
+            sample_held(t, s, 1);
+        }
+    }
+}
+
+} // namespace
 
 void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts& starts,
                      std::size_t b, std::size_t e) {
@@ -236,10 +304,13 @@ void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts
     const Lanes l{starts.x + o, starts.y + o, starts.z + o, a.px + b,  a.py + b,  a.pz + b,
                   a.vx + b,     a.vy + b,     a.vz + b,     a.kom + b, a.mass + b};
     const std::size_t n = e - b;
-    const std::uint32_t stiff =
-        t.field != nullptr
-            ? integrate_lanes(t, FieldWind(t.field->sampler(), l.px, l.py, l.pz, n), l, n)
-            : integrate_lanes(t, GlobalWind{t.q.w.x, t.q.w.y, t.q.w.z}, l, n);
+    std::uint32_t stiff = 0;
+    if (t.field != nullptr) {
+        refresh_held(t, b, e);
+        stiff = integrate_lanes(t, HeldWind{t.held[0] + b, t.held[1] + b, t.held[2] + b}, l, n);
+    } else {
+        stiff = integrate_lanes(t, GlobalWind{t.q.w.x, t.q.w.y, t.q.w.z}, l, n);
+    }
     t.stiff[chunk] += stiff;
 }
 

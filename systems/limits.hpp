@@ -45,6 +45,7 @@ inline constexpr double max_repose_deg = 89.0;
 /// Largest cells_x·cells_y·cells_z a field may have.
 inline constexpr std::uint64_t max_wind_field_cells = 1ull << 24;
 inline constexpr std::uint32_t max_wind_field_update_every = 1u << 16; ///< ticks
+inline constexpr std::uint32_t max_wind_field_sample_every = 1u << 10; ///< ticks
 inline constexpr std::uint32_t max_pressure_iterations = 4096;         ///< SOR sweeps per step
 inline constexpr double max_eddy_viscosity = 10.0;                     ///< m²/s
 

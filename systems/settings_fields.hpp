@@ -78,6 +78,7 @@ inline constexpr FieldRule<WindFieldDef> wind_field_fields[] = {
     {"cells[1]", &WindFieldDef::cells_y, at_least(1)},
     {"cells[2]", &WindFieldDef::cells_z, at_least(1)},
     {"update_every", &WindFieldDef::update_every, between(1, max_wind_field_update_every)},
+    {"sample_every", &WindFieldDef::sample_every, between(1, max_wind_field_sample_every)},
     {"pressure_iterations", &WindFieldDef::pressure_iterations,
      between(1, max_pressure_iterations)},
     {"eddy_viscosity", &WindFieldDef::eddy_viscosity, between(0, max_eddy_viscosity)},

@@ -100,7 +100,8 @@ void Simulation::set_wind_field(const WindFieldDef& def) {
         f.transport = old->transport;
     }
     world_.set_resource<WindField>(std::move(f));
-    world_.erase_resource<WindFieldSolver>(); // obstacles are marked for the new grid
+    world_.erase_resource<WindFieldSolver>();     // obstacles are marked for the new grid
+    world_.resource<FlakePool>().hold_wind(true); // every flake samples the new field
 }
 
 void Simulation::set_wind_transport(const WindTransportDef& def) {
@@ -121,6 +122,7 @@ void Simulation::clear_wind_transport() {
 void Simulation::clear_wind_field() {
     world_.erase_resource<WindField>();
     world_.erase_resource<WindFieldSolver>();
+    world_.resource<FlakePool>().hold_wind(false);
 }
 
 Entity Simulation::add_surface(const SurfaceDef& def, Entity owner) {

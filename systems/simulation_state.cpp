@@ -72,6 +72,11 @@ void hash_pool(StateHasher& h, const FlakePool& f) {
         }
         h.value(f.mass_units[i]);
         h.value(f.id[i]);
+        if (f.holds_wind()) {
+            for (const auto& a : f.held_wind) {
+                h.value(a[i]);
+            }
+        }
     }
     h.span(std::span<const std::uint32_t>(f.free_stack));
 }
@@ -174,7 +179,7 @@ void hash_wind_field(StateHasher& h, const WindField* f) {
     }
     const WindFieldDef& d = f->def;
     for (const std::uint32_t v :
-         {d.cells_x, d.cells_y, d.cells_z, d.update_every, d.pressure_iterations}) {
+         {d.cells_x, d.cells_y, d.cells_z, d.update_every, d.sample_every, d.pressure_iterations}) {
         h.value(v);
     }
     h.value(d.eddy_viscosity);

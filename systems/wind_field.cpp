@@ -373,6 +373,7 @@ void centre_velocity(WindField& f, const glm::vec3& inflow, std::uint8_t sides) 
         });
         fill_ghosts(f.at_centre[a], c, inflow[a], sides);
     }
+    pack_centre(f);
 }
 
 void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) {
@@ -478,7 +479,18 @@ WindField make_wind_field(const WindFieldDef& def, const Aabb& bounds) {
     for (auto& c : f.at_centre) {
         c.assign(f.centre.size(), 0.0f);
     }
+    f.packed_centre.assign(f.centre.size(), pack_wind(0.0f, 0.0f, 0.0f));
     return f;
+}
+
+void pack_centre(WindField& f) {
+    const float* u = f.at_centre[0].data();
+    const float* v = f.at_centre[1].data();
+    const float* w = f.at_centre[2].data();
+    std::uint64_t* out = f.packed_centre.data();
+    for (std::size_t i = 0; i < f.packed_centre.size(); ++i) {
+        out[i] = pack_wind(u[i], v[i], w[i]);
+    }
 }
 
 std::uint8_t inflow_sides(const glm::vec3& wind) {

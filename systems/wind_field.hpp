@@ -6,6 +6,7 @@
 #pragma once
 
 #include "systems/geometry.hpp"
+#include "systems/held_wind.hpp"
 #include "systems/wind_transport.hpp"
 
 #include <glm/vec3.hpp>
@@ -24,6 +25,7 @@ namespace snow {
 struct WindFieldDef {
     std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
     std::uint32_t update_every = 4;                         ///< ticks between solver steps
+    std::uint32_t sample_every = 32;       ///< ticks between a flake's samples (held_wind.hpp)
     std::uint32_t pressure_iterations = 8; ///< red-black SOR sweeps per step (fixed)
     float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
 };
@@ -102,27 +104,69 @@ inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) 
     return y0 + p.tz * (y1 - y0);
 }
 
-/// Reads the cell-centre velocities of a field: plain values and pointers,
-/// so a flake loop holding one by value vectorises.
+/// A cell-centre velocity as its readers see it: u, v, w as held steps
+/// (held_wind.hpp) in bits 0–15, 16–31 and 32–47 of one word, so that one
+/// 8-byte read gives all three components of a corner and a trilinear read
+/// touches 4 cache lines, not 12 (docs/wind_field.md "Sampling").
+inline std::uint64_t pack_wind(float u, float v, float w) {
+    const auto bits = [](float c) {
+        return std::uint64_t{static_cast<std::uint16_t>(hold_wind_component(c))};
+    };
+    return bits(u) | (bits(v) << 16) | (bits(w) << 32);
+}
+
+/// Component a (0, 1, 2) of a packed velocity, in held steps.
+inline float packed_steps(std::uint64_t p, int a) {
+    return static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(p >> (16 * a))));
+}
+
+/// Trilinear between the corners c[0..7] (x fastest, then y, then z) of
+/// component a, in held steps.
+inline float trilinear_steps(const std::uint64_t (&c)[8], int a, const LatticePoint& p) {
+    const auto along_x = [&](int lo) {
+        const float v0 = packed_steps(c[lo], a), v1 = packed_steps(c[lo + 1], a);
+        return v0 + p.tx * (v1 - v0);
+    };
+    const float x00 = along_x(0), x10 = along_x(2), x01 = along_x(4), x11 = along_x(6);
+    const float y0 = x00 + p.ty * (x10 - x00);
+    const float y1 = x01 + p.ty * (x11 - x01);
+    return y0 + p.tz * (y1 - y0);
+}
+
+/// Reads the packed cell-centre velocities of a field: plain values and
+/// pointers, so a flake loop holding one by value vectorises.
 struct WindSampler {
-    const float* c[3]; ///< cell-centre u, v, w on the centre lattice
+    const std::uint64_t* c; ///< WindField::packed_centre
     Lattice centre;
     glm::vec3 origin;   ///< bounds.min
     glm::vec3 inv_cell; ///< 1 / cell edge (1/m)
     glm::vec3 cells;    ///< cells per axis, as floats
 
-    /// Wind (m/s) at world point (x, y, z), trilinear between cell centres;
-    /// points outside the bounds read the nearest boundary value. Scalars
-    /// out and always inlined, so flake loops vectorise.
-    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy,
-                                   float& wz) const {
+    /// Wind at world point (x, y, z) in held steps, trilinear between cell
+    /// centres; points outside the bounds read the nearest boundary value.
+    /// Scalars out and always inlined, so flake loops vectorise.
+    [[gnu::always_inline]] void steps_at(float x, float y, float z, float& wx, float& wy,
+                                         float& wz) const {
         const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
         const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
         const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
         const LatticePoint p = locate(centre, gx, gy, gz);
-        wx = trilinear(c[0], centre, p);
-        wy = trilinear(c[1], centre, p);
-        wz = trilinear(c[2], centre, p);
+        const std::int32_t sy = centre.dim[0], sz = centre.dim[0] * centre.dim[1];
+        const std::uint64_t corner[8] = {
+            c[p.base],      c[p.base + 1],      c[p.base + sy],      c[p.base + sy + 1],
+            c[p.base + sz], c[p.base + sz + 1], c[p.base + sy + sz], c[p.base + sy + sz + 1]};
+        wx = trilinear_steps(corner, 0, p);
+        wy = trilinear_steps(corner, 1, p);
+        wz = trilinear_steps(corner, 2, p);
+    }
+
+    /// The same in m/s (exact: the step is a power of two).
+    [[gnu::always_inline]] void at(float x, float y, float z, float& wx, float& wy,
+                                   float& wz) const {
+        steps_at(x, y, z, wx, wy, wz);
+        wx *= 1.0f / held_wind_steps_per_mps;
+        wy *= 1.0f / held_wind_steps_per_mps;
+        wz *= 1.0f / held_wind_steps_per_mps;
     }
 };
 
@@ -146,7 +190,8 @@ struct WindField {
     std::optional<WindTransportDef> transport; ///< snow the wind moves; absent: none
 
     // -- derived after each step --
-    std::vector<float> at_centre[3]; ///< cell-centre velocity, ghosts included
+    std::vector<float> at_centre[3]; ///< cell-centre velocity, ghosts included (the solver's)
+    std::vector<std::uint64_t> packed_centre; ///< the same packed (pack_wind): what readers read
 
     /// What flakes read the field through (valid until the next step).
     [[nodiscard]] WindSampler sampler() const;
@@ -159,7 +204,7 @@ struct WindField {
 };
 
 inline WindSampler WindField::sampler() const {
-    return {{at_centre[0].data(), at_centre[1].data(), at_centre[2].data()},
+    return {packed_centre.data(),
             centre,
             origin,
             inv_cell,
@@ -169,5 +214,9 @@ inline WindSampler WindField::sampler() const {
 /// A still field of `def`'s size over `bounds` (def already validated); it
 /// takes the global wind at its first step.
 [[nodiscard]] WindField make_wind_field(const WindFieldDef& def, const Aabb& bounds);
+
+/// Packs at_centre into packed_centre: after every step, and after anything
+/// else that writes at_centre.
+void pack_centre(WindField& f);
 
 } // namespace snow

@@ -141,9 +141,10 @@ WindFieldStudyOptions wind_plan(const Args& a) {
     if (a.quick) {
         o.seconds = std::min(a.seconds, 2.0f);
         o.warmup = 1.0f;
-        o.reference = {1.0f, 4};
+        o.reference = {1.0f, 4, 1};
         o.cell_scales = {0.5f};
         o.update_everys = {8};
+        o.sample_everys = {1, WindFieldDef{}.sample_every};
     }
     return o;
 }

@@ -86,6 +86,7 @@ Run run_field(const WindFieldStudyOptions& o, const WindFieldKnobs& k, const Pro
     def.cells_y = k.cells(1);
     def.cells_z = k.cells(2);
     def.update_every = k.update_every;
+    def.sample_every = k.sample_every;
     sim.set_wind_field(def);
     dt = sim.config().dt;
     const auto ticks = static_cast<std::uint64_t>(std::llround(o.seconds / dt));
@@ -124,6 +125,7 @@ Run run_field(const WindFieldStudyOptions& o, const WindFieldKnobs& k, const Pro
     r.point.lee_speed = mean_speed(probes.lee_begin, probes.free_begin);
     r.point.free_speed = mean_speed(probes.free_begin, probes.at.size());
     r.point.lee_units = ground_units_in(sim.world(), {lee_x0, lee_z0, lee_x1, lee_z1});
+    r.point.depth = capture_depth(sim);
     return r;
 }
 
@@ -143,10 +145,11 @@ void say(std::FILE* progress, const char* role, const WindFieldPoint& p) {
         return;
     }
     std::fprintf(progress,
-                 "  %-8s field %ux%ux%u every %2u  %7.3f ms/tick (field %.3f)  wind rel L1 %.3f  "
-                 "lee %.2f m/s\n",
+                 "  %-8s field %ux%ux%u every %2u, samples every %2u  %7.3f ms/tick (field %.3f)  "
+                 "wind rel L1 %.3f  lee %.2f m/s\n",
                  role, p.knobs.cells(0), p.knobs.cells(1), p.knobs.cells(2), p.knobs.update_every,
-                 p.cpu_ms_per_tick, p.field_ms_per_tick, p.wind_rel_l1, p.lee_speed);
+                 p.knobs.sample_every, p.cpu_ms_per_tick, p.field_ms_per_tick, p.wind_rel_l1,
+                 p.lee_speed);
     std::fflush(progress);
 }
 
@@ -184,10 +187,23 @@ WindFieldStudy run_wind_field_study(const WindFieldStudyOptions& o, std::FILE* p
         return study.points.size() - 1;
     };
     for (const float s : o.cell_scales) {
-        study.cell_sweep.push_back(point({s, o.baseline.update_every}));
+        study.cell_sweep.push_back(point({s, o.baseline.update_every, o.baseline.sample_every}));
     }
     for (const std::uint32_t every : o.update_everys) {
-        study.update_sweep.push_back(point({o.baseline.cell_scale, every}));
+        study.update_sweep.push_back(
+            point({o.baseline.cell_scale, every, o.baseline.sample_every}));
+    }
+    for (const std::uint32_t every : o.sample_everys) {
+        study.sample_sweep.push_back(
+            point({o.baseline.cell_scale, o.baseline.update_every, every}));
+    }
+    const WindFieldPoint& first = study.points[study.sample_sweep.front()];
+    for (const std::size_t i : study.sample_sweep) {
+        WindFieldPoint& p = study.points[i];
+        p.depth_vs_first = compare_depth(p.depth, first.depth, 1.0f);
+        p.lee_units_vs_first = first.lee_units > 0 ? static_cast<double>(p.lee_units) /
+                                                         static_cast<double>(first.lee_units)
+                                                   : 0.0;
     }
     return study;
 }

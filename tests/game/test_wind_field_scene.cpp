@@ -33,7 +33,8 @@ SceneLoadResult load(const std::string& text) {
 
 TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
     const SceneLoadResult r =
-        load(village_with_field("\"cells\": [40, 12, 40], \"update_every\": 2"));
+        load(village_with_field("\"cells\": [40, 12, 40], \"update_every\": 2, "
+                                "\"sample_every\": 8"));
     ASSERT_TRUE(r.sim) << r.error;
     const auto* f = r.sim->world().try_resource<WindField>();
     ASSERT_NE(f, nullptr);
@@ -41,6 +42,7 @@ TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
     EXPECT_EQ(f->n[1], 12u);
     EXPECT_EQ(f->n[2], 40u);
     EXPECT_EQ(f->def.update_every, 2u);
+    EXPECT_EQ(f->def.sample_every, 8u);
     const SceneLoadResult plain = load(village_text());
     ASSERT_TRUE(plain.sim) << plain.error;
     EXPECT_FALSE(plain.sim->world().has_resource<WindField>());
@@ -58,6 +60,8 @@ TEST(WindFieldScene, BadFieldsGiveOneErrorNamingTheField) {
     rejects("\"cells\": [64, 16]", {"wind.field.cells", "3 cell counts"});
     rejects("\"cells\": [512, 512, 512]", {"wind.field.cells (total)", "16777216"});
     rejects("\"update_every\": 0", {"wind.field.update_every"});
+    rejects("\"sample_every\": 0", {"wind.field.sample_every"});
+    rejects("\"sample_every\": 2.5", {"wind.field.sample_every"});
     rejects("\"eddy_viscosity\": -1", {"wind.field.eddy_viscosity"});
     rejects("\"eddy_viscosity\": \"fast\"", {"wind.field.eddy_viscosity"});
     rejects("\"speed\": 3", {"wind.field", "unknown field 'speed'"});

@@ -2,7 +2,9 @@
 // sheltering the lee of a box as surface-mounted cube experiments report
 // (Martinuzzi & Tropea 1993: reattachment about 1.6 h behind the cube),
 // felt by flakes, deterministic across threads and restore.
+#include "systems/held_wind.hpp"
 #include "systems/internal_access.hpp"
+#include "systems/limits.hpp"
 #include "systems/sample_scenes.hpp"
 #include "systems/simulation.hpp"
 #include "systems/wind_field_solver.hpp"
@@ -112,10 +114,16 @@ TEST(WindField, BadDefinitionsNameTheFieldAndChangeNothing) {
     d = {};
     d.pressure_iterations = 0;
     rejects(d, "wind.field.pressure_iterations");
+    d = {};
+    d.sample_every = 0;
+    rejects(d, "wind.field.sample_every");
+    d = {};
+    d.sample_every = max_wind_field_sample_every + 1;
+    rejects(d, "wind.field.sample_every");
 }
 
 /// The yard of the determinism tests with a field: snow falls through it.
-std::unique_ptr<Simulation> yard_in_field(unsigned threads) {
+std::unique_ptr<Simulation> yard_in_field(unsigned threads, WindFieldDef def = {}) {
     YardOptions o;
     o.threads = threads;
     o.max_flakes = 60000;
@@ -127,7 +135,7 @@ std::unique_ptr<Simulation> yard_in_field(unsigned threads) {
     gusty.gust_strength = 2.0f;
     gusty.gust_rate = 0.5f;
     sim->set_wind(gusty);
-    sim->set_wind_field(WindFieldDef{});
+    sim->set_wind_field(def);
     return sim;
 }
 
@@ -147,9 +155,9 @@ TEST(WindField, PinnedHashHoldsInEveryBuild) {
     // As Determinism.PinnedHashHoldsInEveryBuild, with the field: scalar
     // Debug and vectorised Release builds must compute it bit for bit alike.
     // Re-pin only with a reason in the commit message. (Last re-pinned when
-    // the pool came to be kept in spatial order and draws keyed by flake id,
-    // as Determinism.PinnedHashHoldsInEveryBuild; before, 0xb809d48c0273f687.)
-    constexpr std::uint64_t pinned = 0x58aefa12868383faull;
+    // flakes came to hold the field's wind, sampled every sample_every ticks
+    // from a packed copy of the field; before, 0x58aefa12868383fa.)
+    constexpr std::uint64_t pinned = 0x80d512342fb2957full;
     auto sim = make_yard();
     sim->set_wind_field(WindFieldDef{});
     sim->run(200);
@@ -193,6 +201,87 @@ TEST(WindField, OddRowsProjectMirrorSymmetrically) {
         }
     }
     EXPECT_GT(largest, 0.0f) << "the box must deflect the air";
+}
+
+/// Per slot before a tick: the flake's id (or none), path start, velocity
+/// and held wind.
+struct SlotBefore {
+    bool alive;
+    std::uint32_t id;
+    glm::vec3 start;
+    glm::vec3 velocity;
+    std::int16_t held[3];
+};
+
+std::vector<SlotBefore> slots_before(const FlakePool& f) {
+    std::vector<SlotBefore> v(f.slot_end);
+    for (std::uint32_t s = 0; s < f.slot_end; ++s) {
+        v[s] = {f.is_alive(s),
+                f.id[s],
+                {f.px[s], f.py[s], f.pz[s]},
+                {f.vx[s], f.vy[s], f.vz[s]},
+                {f.held_wind[0][s], f.held_wind[1][s], f.held_wind[2][s]}};
+    }
+    return v;
+}
+
+TEST(WindField, FlakesSampleTheFieldEverySampleEveryTicksAndHoldItBetween) {
+    // Over ticks clear of an ordering (the slots stay put), every flake
+    // alive across a tick either keeps its held wind or holds the field
+    // (the one the tick stepped) sampled half a hold ahead of its path start
+    // at its velocity before the tick, and over
+    // sample_every ticks it does the second at least once and changes at
+    // most once. With sample_every 1 it samples every tick.
+    for (const std::uint32_t every : {1u, 8u}) {
+        WindFieldDef def;
+        def.sample_every = every;
+        auto sim = yard_in_field(1, def);
+        sim->run(10); // the first step and the first samples
+        const FlakePool& f = sim->world().resource<FlakePool>();
+        ASSERT_TRUE(f.holds_wind());
+        // Per slot over the window: ticks it held a fresh sample, ticks its
+        // held wind changed, whether its flake lived through the window.
+        std::vector<std::uint32_t> sampled(f.capacity(), 0), changed(f.capacity(), 0);
+        std::vector<bool> followed(f.capacity(), true);
+        const std::uint32_t ticks = 4 * every;
+        for (std::uint32_t t = 0; t < ticks; ++t) {
+            const std::vector<SlotBefore> before = slots_before(f);
+            sim->run(1);
+            const WindField& field = sim->world().resource<WindField>();
+            for (std::uint32_t s = 0; s < f.capacity(); ++s) {
+                if (s >= before.size() || !before[s].alive || !f.is_alive(s) ||
+                    f.id[s] != before[s].id) {
+                    followed[s] = false; // free, landed or replaced during the window
+                    continue;
+                }
+                const SlotBefore& b = before[s];
+                const float ahead = 0.5f * static_cast<float>(every) * sim->config().dt;
+                const glm::vec3 w =
+                    field.at(b.start.x + ahead * b.velocity.x, b.start.y + ahead * b.velocity.y,
+                             b.start.z + ahead * b.velocity.z);
+                const std::int16_t fresh[3] = {hold_wind_component(w.x), hold_wind_component(w.y),
+                                               hold_wind_component(w.z)};
+                bool same = true, is_fresh = true;
+                for (int a = 0; a < 3; ++a) {
+                    same = same && f.held_wind[a][s] == b.held[a];
+                    is_fresh = is_fresh && f.held_wind[a][s] == fresh[a];
+                }
+                ASSERT_TRUE(same || is_fresh) << "slot " << s << " tick " << t;
+                sampled[s] += is_fresh ? 1u : 0u;
+                changed[s] += same ? 0u : 1u;
+            }
+        }
+        std::uint32_t count = 0;
+        for (std::uint32_t s = 0; s < f.capacity(); ++s) {
+            if (!followed[s]) {
+                continue;
+            }
+            ++count;
+            ASSERT_GE(sampled[s], ticks / every) << "slot " << s << ", every " << every;
+            ASSERT_LE(changed[s], ticks / every) << "slot " << s << ", every " << every;
+        }
+        EXPECT_GT(count, 10000u) << "every " << every;
+    }
 }
 
 TEST(WindField, SaveRestoreReplaysExactly) {
