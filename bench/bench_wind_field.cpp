@@ -2,9 +2,9 @@
 // the benchmark yard (garage and snowman as obstacles); the integrate pass
 // with flakes dragging towards the field's wind they hold, sampled every
 // sample_every ticks (compare ns_per_flake with BM_Integrate: the difference
-// is the sampling); and the
-// wind transport over a snow surface of which only a windy square is above
-// the threshold (the cost must follow that square, not the surface).
+// is the sampling); and the wind transport over a snow surface of which only
+// a windy square is above the threshold (the cost must follow that square,
+// not the surface).
 #include "bench_scene.hpp"
 
 #include "systems/internal_access.hpp"

@@ -1,10 +1,10 @@
 /// @file held_wind.hpp
 /// @brief How a flake holds the wind field's wind between two samples
-/// (docs/wind_field.md "Sampling"): a slot samples the field on the ticks
-/// whose count is the slot's number modulo WindFieldDef::sample_every, and
-/// on the first tick after its flake was made; in between it drags towards
-/// the sample it holds. Held as whole steps of 1/256 m/s in 16 bits: 6 bytes
-/// a flake to stream each tick instead of 12.
+/// (docs/wind_field.md "Sampling"): each 512-slot block samples one
+/// contiguous run of its slots a tick, run number tick mod
+/// WindFieldDef::sample_every, and a new flake samples on its first tick; in
+/// between a flake drags towards the sample it holds. Held as whole steps of 1/256 m/s in 16 bits:
+/// 6 bytes a flake to stream each tick instead of 12.
 #pragma once
 
 #include <algorithm>

@@ -6,8 +6,8 @@
 // (flake_stages.hpp): the path start is produced here, once, for collide and
 // deposit. With a declared wind field each flake drags towards the field's
 // wind it holds instead of the one global wind; the block's due slots sample
-// the field at their path start first (trilinear, WindSampler::at; when:
-// held_wind.hpp).
+// the field first, half a hold ahead of their path start (trilinear,
+// WindSampler::steps_at; which slots when: held_wind.hpp).
 //
 // The guarded pass is one branch-free loop over distinct (__restrict) arrays
 // so GCC and Clang vectorise it (selects need -fno-trapping-math, set
@@ -162,7 +162,7 @@ struct IntegrateTick {
     WindSampler sampler{};
     std::int16_t* held[3] = {nullptr, nullptr, nullptr};
     std::uint32_t sample_every = 1;
-    std::uint32_t phase = 0; ///< slots ≡ phase (mod sample_every) sample this tick
+    std::uint32_t phase = 0; ///< each block's run number phase samples this tick
     float lookahead = 0.0f;  ///< s: half a hold, how far ahead of the flake a sample is taken
     Integrator kind = Integrator::explicit_euler;
     /// One count per chunk, sized once per pool size; each chunk's blocks

@@ -88,13 +88,10 @@ inline void pair_at(const float* d, std::int32_t b, float& lo, float& hi) {
     hi = std::bit_cast<float>(static_cast<std::uint32_t>(v >> 32));
 }
 
-inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) {
-    const std::int32_t sy = l.dim[0], sz = l.dim[0] * l.dim[1];
-    float a0, a1, b0, b1, c0, c1, e0, e1;
-    pair_at(d, p.base, a0, a1);
-    pair_at(d, p.base + sy, b0, b1);
-    pair_at(d, p.base + sz, c0, c1);
-    pair_at(d, p.base + sy + sz, e0, e1);
+/// Trilinear between the 8 corner values of p's cell: (a0, a1) along x at
+/// the low y and z, (b0, b1) at y + 1, (c0, c1) at z + 1, (e0, e1) at both.
+inline float trilinear_corners(float a0, float a1, float b0, float b1, float c0, float c1, float e0,
+                               float e1, const LatticePoint& p) {
     const float x00 = a0 + p.tx * (a1 - a0);
     const float x10 = b0 + p.tx * (b1 - b0);
     const float x01 = c0 + p.tx * (c1 - c0);
@@ -102,6 +99,16 @@ inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) 
     const float y0 = x00 + p.ty * (x10 - x00);
     const float y1 = x01 + p.ty * (x11 - x01);
     return y0 + p.tz * (y1 - y0);
+}
+
+inline float trilinear(const float* d, const Lattice& l, const LatticePoint& p) {
+    const std::int32_t sy = l.dim[0], sz = l.dim[0] * l.dim[1];
+    float a0, a1, b0, b1, c0, c1, e0, e1;
+    pair_at(d, p.base, a0, a1);
+    pair_at(d, p.base + sy, b0, b1);
+    pair_at(d, p.base + sz, c0, c1);
+    pair_at(d, p.base + sy + sz, e0, e1);
+    return trilinear_corners(a0, a1, b0, b1, c0, c1, e0, e1, p);
 }
 
 /// A cell-centre velocity as its readers see it: u, v, w as held steps
@@ -123,14 +130,9 @@ inline float packed_steps(std::uint64_t p, int a) {
 /// Trilinear between the corners c[0..7] (x fastest, then y, then z) of
 /// component a, in held steps.
 inline float trilinear_steps(const std::uint64_t (&c)[8], int a, const LatticePoint& p) {
-    const auto along_x = [&](int lo) {
-        const float v0 = packed_steps(c[lo], a), v1 = packed_steps(c[lo + 1], a);
-        return v0 + p.tx * (v1 - v0);
-    };
-    const float x00 = along_x(0), x10 = along_x(2), x01 = along_x(4), x11 = along_x(6);
-    const float y0 = x00 + p.ty * (x10 - x00);
-    const float y1 = x01 + p.ty * (x11 - x01);
-    return y0 + p.tz * (y1 - y0);
+    return trilinear_corners(packed_steps(c[0], a), packed_steps(c[1], a), packed_steps(c[2], a),
+                             packed_steps(c[3], a), packed_steps(c[4], a), packed_steps(c[5], a),
+                             packed_steps(c[6], a), packed_steps(c[7], a), p);
 }
 
 /// Reads the packed cell-centre velocities of a field: plain values and
