@@ -15,6 +15,7 @@
 
 #include "systems/wind_field_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -105,41 +106,146 @@ void enforce(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow, st
     }
 }
 
-/// New values of component `a` at its faces: each face traces back along the
-/// mean of the two cell-centre velocities beside it and reads the old
-/// component there [STAM §3.2].
-void advect(const WindField& f, int a, const std::vector<float>& src, std::vector<float>& dst,
-            float dt) {
-    const Lattice l = f.face[a]; // copies: no store in the loop can change them
-    const Lattice& c = f.centre;
-    const float* cu = f.at_centre[0].data();
-    const float* cv = f.at_centre[1].data();
-    const float* cw = f.at_centre[2].data();
-    const float* s = src.data();
-    float* d = dst.data();
-    const std::int32_t up = c.stride(a);
-    const float kx = dt * f.inv_cell.x, ky = dt * f.inv_cell.y, kz = dt * f.inv_cell.z;
-    const float nx = static_cast<float>(f.n[0]), ny = static_cast<float>(f.n[1]),
-                nz = static_cast<float>(f.n[2]);
-    const std::int32_t i0 = first(l, 0), i1 = end(l, 0);
-    const float sx = l.shift[0];
-    each_row(l, [&](std::int32_t row, std::int32_t j, std::int32_t k) {
+/// Reads of one advection: the face lattice, the centre velocities it traces
+/// along, and the scale from m/s to cells per step. Plain values, so the
+/// row loops that hold one vectorise.
+struct Tracer {
+    Lattice l;
+    const float* cu;
+    const float* cv;
+    const float* cw;
+    std::int32_t up;  ///< the centre lattice's stride along the face axis
+    float kx, ky, kz; ///< dt / cell edge per axis
+    float nx, ny, nz; ///< cells per axis
+
+    /// Where face `i` of row (j, k), whose first centre cell below is
+    /// `below`, traces back to [STAM §3.2]: back along the mean of the two
+    /// cell-centre velocities beside it.
+    [[gnu::always_inline]] LatticePoint at(std::int32_t i, std::int32_t j, std::int32_t k,
+                                           std::int32_t below) const {
+        const std::int32_t lo = below + i, hi = lo + up;
+        const float x = static_cast<float>(i) - l.shift[0];
         const float y = static_cast<float>(j) - l.shift[1];
         const float z = static_cast<float>(k) - l.shift[2];
-        // The centre cell below the face along a has this row's (j, k) and i.
+        const float bx = clamp_value(x - kx * (0.5f * (cu[lo] + cu[hi])), 0.0f, nx);
+        const float by = clamp_value(y - ky * (0.5f * (cv[lo] + cv[hi])), 0.0f, ny);
+        const float bz = clamp_value(z - kz * (0.5f * (cw[lo] + cw[hi])), 0.0f, nz);
+        return locate(l, bx, by, bz);
+    }
+};
+
+/// Trilinear along x on one line of the source: between samples i − 1 and i
+/// when `back`, else i and i + 1 (the arithmetic of trilinear_corners).
+[[gnu::always_inline]] inline float lerp_line(const float* line, std::int32_t i, bool back,
+                                              float t) {
+    const float m = line[i - 1], c = line[i], p = line[i + 1];
+    const float lo = back ? m : c, hi = back ? c : p;
+    return lo + t * (hi - lo);
+}
+
+/// The lerp between two of three values: (a, b) when `back`, else (b, c).
+[[gnu::always_inline]] inline float lerp_pick(float a, float b, float c, bool back, float t) {
+    const float lo = back ? a : b, hi = back ? b : c;
+    return lo + t * (hi - lo);
+}
+
+/// Faces the advection reads in one vector loop: an AVX-512 register of
+/// floats, two of AVX2.
+constexpr std::int32_t advect_chunk = 16;
+
+/// New values of component `a` at its faces: each face traces back along the
+/// mean of the two cell-centre velocities beside it and reads the old
+/// component there [STAM §3.2]. A trace shorter than a cell ends in a cell
+/// whose corners lie among the 3 × 3 × 3 samples around the face, so the
+/// read is done from contiguous loads of the nine lines around the row,
+/// picking each lerp's ends by the trace's direction: the same corners and
+/// the same arithmetic as trilinear(), without its gathers, which were half
+/// a step (docs/wind_field.md "Cost"). A chunk holding a longer trace, rows
+/// shorter than a chunk, and the first and last face of a face-axis row
+/// (whose x neighbours lie outside it) are read by trilinear().
+void advect(const WindField& f, int a, const std::vector<float>& src, std::vector<float>& dst,
+            float dt) {
+    const Lattice& c = f.centre;
+    const Tracer tr{f.face[a],
+                    f.at_centre[0].data(),
+                    f.at_centre[1].data(),
+                    f.at_centre[2].data(),
+                    c.stride(a),
+                    dt * f.inv_cell.x,
+                    dt * f.inv_cell.y,
+                    dt * f.inv_cell.z,
+                    static_cast<float>(f.n[0]),
+                    static_cast<float>(f.n[1]),
+                    static_cast<float>(f.n[2])};
+    const Lattice& l = tr.l;
+    const float* s = src.data();
+    float* d = dst.data();
+    const std::int32_t i0 = first(l, 0), i1 = end(l, 0);
+    // Along x the contiguous reads need samples i - 1 and i + 1 in the row.
+    const std::int32_t v0 = std::max(i0, 1), v1 = std::min(i1, l.dim[0] - 1);
+    const bool chunked = v1 - v0 >= advect_chunk;
+    each_row(l, [&](std::int32_t row, std::int32_t j, std::int32_t k) {
         const std::int32_t below = c.index(0, j, k);
-        // src, dst and the centre arrays are distinct: ivdep lets the reads
-        // at the traced points become gathers.
+        float* out = d + row;
+        const auto by_trilinear = [&](std::int32_t i) {
+            out[i] = trilinear(s, l, tr.at(i, j, k, below));
+        };
+        if (!chunked) {
+            for (std::int32_t i = i0; i < i1; ++i) {
+                by_trilinear(i);
+            }
+            return;
+        }
+        // The nine lines at y, z ± 1, kept in the lattice: a clamped line is
+        // never picked (the clamped trace cannot reach past the lattice).
+        const auto line = [&](std::int32_t dy, std::int32_t dz) {
+            const std::int32_t y = std::clamp(j + dy, 0, l.dim[1] - 1);
+            const std::int32_t z = std::clamp(k + dz, 0, l.dim[2] - 1);
+            return s + l.index(0, y, z);
+        };
+        const float *mm = line(-1, -1), *cm = line(0, -1), *pm = line(1, -1);
+        const float *mc = line(-1, 0), *cc = line(0, 0), *pc = line(1, 0);
+        const float *mp = line(-1, 1), *cp = line(0, 1), *pp = line(1, 1);
+        // Chunks of a fixed length vectorise with no scalar remainder; the
+        // last one ends at v1 and may redo faces of the one before (the same
+        // values: each face is a function of the old field alone).
+        for (std::int32_t from = v0; from < v1; from += advect_chunk) {
+            const std::int32_t at = std::min(from, v1 - advect_chunk);
+            std::int32_t far = 0;            // 32-bit, as the floats: one vector width
+                                             // src, dst and the centre arrays are distinct.
 #if defined(__GNUC__) && !defined(__clang__) // Clang has no ivdep; it vectorises without
 #pragma GCC ivdep
 #endif
-        for (std::int32_t i = i0; i < i1; ++i) {
-            const std::int32_t lo = below + i, hi = lo + up;
-            const float x = static_cast<float>(i) - sx;
-            const float bx = clamp_value(x - kx * (0.5f * (cu[lo] + cu[hi])), 0.0f, nx);
-            const float by = clamp_value(y - ky * (0.5f * (cv[lo] + cv[hi])), 0.0f, ny);
-            const float bz = clamp_value(z - kz * (0.5f * (cw[lo] + cw[hi])), 0.0f, nz);
-            d[row + i] = trilinear(s, l, locate(l, bx, by, bz));
+            for (std::int32_t n = 0; n < advect_chunk; ++n) {
+                const std::int32_t i = at + n;
+                const LatticePoint t = tr.at(i, j, k, below);
+                // The lower corner is one back (offset −1) or at the face (0).
+                const std::int32_t dx = t.i - i, dy = t.j - j, dz = t.k - k;
+                const bool bx = dx != 0, by = dy != 0, bz = dz != 0;
+                const float tx = t.tx, ty = t.ty, tz = t.tz;
+                const float ym = lerp_pick(lerp_line(mm, i, bx, tx), lerp_line(cm, i, bx, tx),
+                                           lerp_line(pm, i, bx, tx), by, ty);
+                const float yc = lerp_pick(lerp_line(mc, i, bx, tx), lerp_line(cc, i, bx, tx),
+                                           lerp_line(pc, i, bx, tx), by, ty);
+                const float yp = lerp_pick(lerp_line(mp, i, bx, tx), lerp_line(cp, i, bx, tx),
+                                           lerp_line(pp, i, bx, tx), by, ty);
+                out[i] = lerp_pick(ym, yc, yp, bz, tz);
+                // Reached by the picks: offsets -1 or 0 on every axis.
+                const auto off = static_cast<std::uint32_t>(dx + 1) |
+                                 static_cast<std::uint32_t>(dy + 1) |
+                                 static_cast<std::uint32_t>(dz + 1);
+                far |= off > 1u ? 1 : 0;
+            }
+            if (far != 0) { // rare: a trace of a cell or more
+                for (std::int32_t i = at; i < at + advect_chunk; ++i) {
+                    by_trilinear(i);
+                }
+            }
+        }
+        for (const std::int32_t i : {i0, i1 - 1}) {
+            if (i < v0 || i >= v1) {
+                by_trilinear(i);
+            }
         }
     });
 }

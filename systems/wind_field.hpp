@@ -65,7 +65,8 @@ inline float clamp_value(float v, float lo, float hi) {
 /// The lower corner and weights of a trilinear read; g is in cell
 /// coordinates, already clamped to [0, n] on each axis.
 struct LatticePoint {
-    std::int32_t base;
+    std::int32_t base;    ///< index of the lower corner
+    std::int32_t i, j, k; ///< the lower corner
     float tx, ty, tz;
 };
 
@@ -75,8 +76,9 @@ inline LatticePoint locate(const Lattice& l, float gx, float gy, float gz) {
     const std::int32_t i = std::min(static_cast<std::int32_t>(lx), l.last[0]);
     const std::int32_t j = std::min(static_cast<std::int32_t>(ly), l.last[1]);
     const std::int32_t k = std::min(static_cast<std::int32_t>(lz), l.last[2]);
-    return {i + l.dim[0] * (j + l.dim[1] * k), lx - static_cast<float>(i),
-            ly - static_cast<float>(j), lz - static_cast<float>(k)};
+    return {
+        l.index(i, j, k),          i, j, k, lx - static_cast<float>(i), ly - static_cast<float>(j),
+        lz - static_cast<float>(k)};
 }
 
 /// Samples b and b + 1 of d, read as one 8-byte load: in a vectorised loop
