@@ -324,10 +324,14 @@ void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size
         // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
         const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                             (z >= bb.min.z) & (z <= bb.max.z);
-        // A signed 32-bit index: GCC gathers with it (vgatherdps); an unsigned
-        // one it widens to 64 bits and loads lane by lane.
-        const auto cell = static_cast<std::int32_t>(g.cell_z(z) * g.nx + g.cell_x(x));
-        const float top = reach[cell];
+        // A path that starts and ends in one cell can meet only what is over
+        // that cell (ColliderGrid::cell_reach): most paths, as a flake moves
+        // a few cm a tick. A signed 32-bit index: GCC gathers with it
+        // (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
+        const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
+        const bool same_cell = (g.cell_x(sx[j]) == cx) & (g.cell_z(sz[j]) == cz);
+        const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
+        const float top = reach[2 * cell + (same_cell ? 0 : 1)];
         const float y0 = sy[j];
         const bool low = !((y < y0 ? y : y0) > top);
         const bool far = is_long(c, x - sx[j], y - y0, z - sz[j]);

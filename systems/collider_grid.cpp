@@ -143,7 +143,7 @@ void dilate(const ColliderGrid& g, const std::vector<float>& in, std::vector<flo
 }
 
 /// cell_mesh_reach from mesh triangles and mesh surfaces, cell_reach from
-/// those and the box and sphere tops.
+/// those and the box and sphere tops (within the cell, and around it).
 void reach(const World& w, ColliderGrid& g) {
     std::vector<float> mesh(g.cell_top.size(), neg_inf);
     const auto raise = [&](float x0, float x1, float z0, float z1, float top) {
@@ -166,7 +166,13 @@ void reach(const World& w, ColliderGrid& g) {
     for (std::size_t c = 0; c < mesh.size(); ++c) {
         mesh[c] = std::max(mesh[c], g.cell_top[c]);
     }
-    dilate(g, mesh, g.cell_reach);
+    std::vector<float> around;
+    dilate(g, mesh, around);
+    g.cell_reach.resize(2 * mesh.size());
+    for (std::size_t c = 0; c < mesh.size(); ++c) {
+        g.cell_reach[2 * c] = std::max(g.cell_top[c], g.cell_mesh_reach[c]);
+        g.cell_reach[2 * c + 1] = around[c];
+    }
 }
 
 void rebuild(World& w, ColliderGrid& g, const Aabb& bounds) {

@@ -55,11 +55,16 @@ struct ColliderGrid {
     std::vector<std::uint32_t> cell_start; ///< nx·nz + 1 offsets
     std::vector<std::uint32_t> cell_items;
     std::vector<float> cell_top; ///< highest box/sphere top over the cell (-inf if none)
-    /// Highest top of any collider (mesh triangles and mesh surfaces included)
-    /// over the cell or its 8 neighbours: a flake that moves less than a cell
-    /// per tick and stays above this meets nothing.
+    /// Highest mesh top (triangles and mesh surfaces) over the cell or its 8
+    /// neighbours.
+    std::vector<float> cell_mesh_reach;
+    /// What the collision prefilter reads, two floats per cell c: at 2c the
+    /// highest top a path that starts and ends in c can meet (the boxes and
+    /// spheres over c, cell_mesh_reach[c]); at 2c + 1 the highest top of any
+    /// collider over c or its 8 neighbours, for a path that moved less than a
+    /// cell per tick but may have come from one of them. A flake whose path
+    /// stays above the one that applies meets nothing.
     std::vector<float> cell_reach;
-    std::vector<float> cell_mesh_reach; ///< the same for mesh tops alone
     std::vector<GridBox> boxes;
     std::vector<GridSphere> spheres;
     std::vector<GridMesh> meshes;        ///< sorted by entity bits (looked up from top_id)
