@@ -10,8 +10,9 @@
 // Every move is computed from the snow as it was before any move of the
 // step, then all are applied (sources first), so the order of cells never
 // matters; units only move, the ledger total holds. Tiles whose centre sees
-// less than half the threshold are skipped whole: the cost follows the windy
-// area, not the surface's size.
+// less than half the threshold are skipped whole, and only tiles under field
+// columns where the air anywhere reaches that speed are looked at: the cost
+// follows the windy area, not the surface's size.
 #include "systems/shed.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
@@ -37,10 +38,13 @@ struct Move {
     std::int8_t dx, dz;
 };
 
-/// World resource: the moves of one surface's step (reused, no allocation
-/// once warm).
+/// World resource: the moves of one surface's step, the field's windy
+/// columns and a surface's tiles to look at (reused, no allocation once warm).
 struct TransportScratch {
     std::vector<Move> moves;
+    std::vector<float> column_speed; ///< per (i, k) of the centre lattice: max u² + w² (steps²)
+    std::vector<std::uint8_t> windy; ///< per lower corner (k · dim x + i): reads there may be windy
+    std::vector<std::uint8_t> windy_row; ///< per k: some corner of it is windy
 };
 
 /// The cell downwind of (ix, iz) by (dx, dz) (one of them 0), or off_surface
@@ -98,16 +102,79 @@ void plan_cell(const SnowSurface& s, const WindTransportDef& t, float seconds, s
     }
 }
 
-/// Plans the moves of every windy tile of `s`.
-void plan_surface(const SnowSurface& s, const WindSampler& air, const WindTransportDef& t,
-                  float seconds, std::vector<Move>& out) {
+/// The lower corners (i, k), in x and z, of the trilinear reads of the field
+/// that may see a horizontal wind of half the threshold, at any height: a
+/// read is a convex blend of its 8 corners, so it is no faster than the
+/// fastest of them. Corners are read as held steps (held_wind.hpp), within
+/// half a step of the cell-centre velocities scanned here: a step of margin
+/// covers that and float rounding.
+void windy_columns(const WindField& f, float threshold, TransportScratch& scratch) {
+    const Lattice& c = f.centre;
+    const std::int32_t nx = c.dim[0], ny = c.dim[1], nz = c.dim[2];
+    std::vector<float>& top = scratch.column_speed;
+    top.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz), 0.0f);
+    for (std::int32_t k = 0; k < nz; ++k) {
+        float* __restrict row = top.data() + static_cast<std::ptrdiff_t>(k) * nx;
+        for (std::int32_t j = 0; j < ny; ++j) {
+            const float* __restrict u = f.at_centre[0].data() + c.index(0, j, k);
+            const float* __restrict w = f.at_centre[2].data() + c.index(0, j, k);
+            for (std::int32_t i = 0; i < nx; ++i) {
+                row[i] = std::max(row[i], u[i] * u[i] + w[i] * w[i]);
+            }
+        }
+    }
+    const float half = std::max(0.0f, 0.5f * threshold - 1.0f / held_wind_steps_per_mps);
+    const float limit = half * half;
+    scratch.windy.assign(top.size(), 0);
+    scratch.windy_row.assign(static_cast<std::size_t>(nz), 0);
+    for (std::int32_t k = 0; k + 1 < nz; ++k) {
+        for (std::int32_t i = 0; i + 1 < nx; ++i) {
+            const std::size_t at = static_cast<std::size_t>(k) * static_cast<std::size_t>(nx) +
+                                   static_cast<std::size_t>(i);
+            const float fastest = std::max({top[at], top[at + 1], top[at + nx], top[at + nx + 1]});
+            // NaN is windy: such a read is left to the exact test.
+            const std::uint8_t windy = fastest < limit ? 0 : 1;
+            scratch.windy[at] = windy;
+            scratch.windy_row[static_cast<std::size_t>(k)] |= windy;
+        }
+    }
+}
+
+/// The lower corner along one axis of a field read at `at` (m): as
+/// WindSampler's locate() finds it.
+std::uint32_t corner_of(const WindField& f, int axis, float at) {
+    const float g =
+        clamp_value((at - f.origin[axis]) * f.inv_cell[axis], 0.0f, static_cast<float>(f.n[axis]));
+    return static_cast<std::uint32_t>(
+        std::min(static_cast<std::int32_t>(g + f.centre.shift[axis]), f.centre.last[axis]));
+}
+
+/// Plans the moves of every windy tile of `s`, row by row. A tile whose
+/// centre's field read has a calm lower corner (windy_columns) is calm
+/// without the read, and a row of tiles over a calm row of corners is
+/// skipped whole, so the cost follows the windy area.
+void plan_surface(const SnowSurface& s, const WindField& f, const TransportScratch& scratch,
+                  const WindTransportDef& t, float seconds, std::vector<Move>& out) {
+    const WindSampler air = f.sampler();
     const std::uint32_t side = 1u << dirty_tile_shift;
+    const auto dim_x = static_cast<std::size_t>(f.centre.dim[0]);
     for (std::uint32_t tz = 0; tz < s.tiles_z(); ++tz) {
+        const std::uint32_t z0 = tz * side, z1 = std::min(z0 + side, s.nz);
+        const std::uint32_t cz = (z0 + z1) / 2; // the centre cell wind_over reads
+        const std::uint32_t k = corner_of(f, 2, s.z0 + (static_cast<float>(cz) + 0.5f) * s.cell);
+        if (scratch.windy_row[k] == 0) {
+            continue;
+        }
         for (std::uint32_t tx = 0; tx < s.tiles_x(); ++tx) {
-            const std::uint32_t x0 = tx * side, z0 = tz * side;
-            const std::uint32_t x1 = std::min(x0 + side, s.nx), z1 = std::min(z0 + side, s.nz);
+            const std::uint32_t x0 = tx * side, x1 = std::min(x0 + side, s.nx);
+            const std::uint32_t cx = (x0 + x1) / 2;
+            const std::uint32_t i =
+                corner_of(f, 0, s.x0 + (static_cast<float>(cx) + 0.5f) * s.cell);
+            if (scratch.windy[k * dim_x + i] == 0) {
+                continue;
+            }
             float u = 0.0f, w = 0.0f;
-            wind_over(air, s, (x0 + x1) / 2, (z0 + z1) / 2, t.height, u, w);
+            wind_over(air, s, cx, cz, t.height, u, w);
             if (!(u * u + w * w > 0.25f * t.threshold * t.threshold)) {
                 continue; // the tile is calm: no cell of it can drift
             }
@@ -164,16 +231,16 @@ void wind_transport_system(World& w) {
     }
     const WindTransportDef& t = *f.transport;
     const float seconds = w.resource<SimConfig>().dt * static_cast<float>(f.def.update_every);
-    const WindSampler air = f.sampler();
     auto* scratch = w.try_resource<TransportScratch>();
     if (scratch == nullptr) {
         scratch = &w.set_resource<TransportScratch>();
     }
     FlakePool& pool = w.resource<FlakePool>();
     const float k_over_m = clump_drag(w);
+    windy_columns(f, t.threshold, *scratch);
     w.each<SnowSurface>([&](Entity, SnowSurface& s) {
         scratch->moves.clear();
-        plan_surface(s, air, t, seconds, scratch->moves);
+        plan_surface(s, f, *scratch, t, seconds, scratch->moves);
         apply(s, scratch->moves, pool, k_over_m);
     });
 }
