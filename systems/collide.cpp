@@ -5,6 +5,7 @@
 // not depend on the thread count.
 #include "systems/body.hpp"
 #include "systems/collider_grid.hpp"
+#include "systems/deposit_bins.hpp"
 #include "systems/flake_pool.hpp"
 #include "systems/flake_stages.hpp"
 #include "systems/jobs.hpp"
@@ -56,11 +57,22 @@ struct CollideScratch {
     bool blocks_built = false;
     std::uint64_t blocks_map_version = 0;
     std::uint64_t blocks_solids_version = 0;
+    /// The flake pass's prefilter table (ColliderGrid::cell_reach raised to
+    /// the deposit bins' tops, collide_share_flags), rebuilt from the grid's
+    /// versions and the bins' tops_version.
+    std::vector<float> shared_reach;
+    bool shared_built = false;
+    std::uint64_t shared_solids_version = 0;
+    std::uint64_t shared_surfaces_version = 0;
+    std::uint64_t shared_tops_version = 0;
 };
 
 struct Context {
     FlakePool* pool = nullptr;
     const ColliderGrid* grid = nullptr;
+    /// The prefilter's table: grid->cell_reach, or the pass's shared one.
+    const float* reach = nullptr;
+    bool shared = false;               ///< reach is the shared table
     const OcclusionMap* map = nullptr; ///< null when no usable map exists
     const float* mesh_block_top = nullptr;
     std::uint32_t blocks_x = 0;
@@ -299,16 +311,40 @@ Outcome resolve(const Context& c, const PathStarts& st, std::size_t i) {
     return out;
 }
 
-/// Marks the flakes of [b, e) that may need work: out of bounds, on a long
-/// path, or low enough to meet a collider near them. Selects only, so it
-/// vectorises; most flakes are above everything near them and are never
-/// looked at again. Without bodies the box test is left out (its empty box
-/// flags nothing): a tenth of the loop's work.
+/// Whether the flake at (x, y, z), whose path this tick started at (x0, y0,
+/// z0), may need work: out of bounds, on a long path, or low enough to meet
+/// a collider near it by `reach` (ColliderGrid::cell_reach's layout). Selects
+/// only, so a loop over flakes vectorises. Without bodies the box test is
+/// left out (its empty box flags nothing): a tenth of the work.
+template <bool with_bodies>
+[[gnu::always_inline]] inline bool needs_tests(const Context& c, const float* reach, float x,
+                                               float y, float z, float x0, float y0, float z0,
+                                               std::uint32_t mass) {
+    const ColliderGrid& g = *c.grid;
+    const Aabb& bb = c.bounds;
+    // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
+    const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
+                        (z >= bb.min.z) & (z <= bb.max.z);
+    // A path that starts and ends in one cell can meet only what is over
+    // that cell (ColliderGrid::cell_reach): most paths, as a flake moves
+    // a few cm a tick. A signed 32-bit index: GCC gathers with it
+    // (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
+    const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
+    const bool same_cell = (g.cell_x(x0) == cx) & (g.cell_z(z0) == cz);
+    const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
+    const float top = reach[2 * cell + (same_cell ? 0 : 1)];
+    const bool low = !((y < y0 ? y : y0) > top);
+    const bool far = is_long(c, x - x0, y - y0, z - z0);
+    const bool body = with_bodies && path_near(c.body_box, x, y, z, x0, y0, z0);
+    return (mass != 0) & (!inside | low | far | body);
+}
+
+/// Marks the flakes of [b, e) that needs_tests() picks by the tick's table;
+/// most flakes are above everything near them and are never looked at again.
 template <bool with_bodies>
 void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
                 std::uint8_t* __restrict flags) {
     const FlakePool& f = *c.pool;
-    const ColliderGrid& g = *c.grid;
     const std::uint32_t* mass = f.mass_units.data() + b;
     const float* px = f.px.data() + b;
     const float* py = f.py.data() + b;
@@ -316,28 +352,25 @@ void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size
     const float* sx = st.x + (b - st.base);
     const float* sy = st.y + (b - st.base);
     const float* sz = st.z + (b - st.base);
-    const float* reach = g.cell_reach.data();
-    const Aabb bb = c.bounds;
-    const Aabb body_box = c.body_box;
+    const Context local = c; // a copy: the flag stores cannot alias it
     for (std::size_t j = 0; j < e - b; ++j) {
-        const float x = px[j], y = py[j], z = pz[j];
-        // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
-        const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
-                            (z >= bb.min.z) & (z <= bb.max.z);
-        // A path that starts and ends in one cell can meet only what is over
-        // that cell (ColliderGrid::cell_reach): most paths, as a flake moves
-        // a few cm a tick. A signed 32-bit index: GCC gathers with it
-        // (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
-        const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
-        const bool same_cell = (g.cell_x(sx[j]) == cx) & (g.cell_z(sz[j]) == cz);
-        const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
-        const float top = reach[2 * cell + (same_cell ? 0 : 1)];
-        const float y0 = sy[j];
-        const bool low = !((y < y0 ? y : y0) > top);
-        const bool far = is_long(c, x - sx[j], y - y0, z - sz[j]);
-        const bool body = with_bodies && path_near(body_box, x, y, z, sx[j], y0, sz[j]);
-        flags[j] = (mass[j] != 0) & (!inside | low | far | body) ? 1 : 0;
+        flags[j] = needs_tests<with_bodies>(local, local.reach, px[j], py[j], pz[j], sx[j], sy[j],
+                                            sz[j], mass[j])
+                       ? 1
+                       : 0;
     }
+}
+
+/// needs_tests() by the grid's own table, for one flake the shared table
+/// flagged (it may have been flagged for deposit alone).
+bool own_flag(const Context& c, const PathStarts& st, std::size_t i) {
+    const FlakePool& f = *c.pool;
+    const std::size_t o = i - st.base;
+    const float* reach = c.grid->cell_reach.data();
+    return c.body_count > 0 ? needs_tests<true>(c, reach, f.px[i], f.py[i], f.pz[i], st.x[o],
+                                                st.y[o], st.z[o], f.mass_units[i])
+                            : needs_tests<false>(c, reach, f.px[i], f.py[i], f.pz[i], st.x[o],
+                                                 st.y[o], st.z[o], f.mass_units[i]);
 }
 
 } // namespace
@@ -349,7 +382,8 @@ struct CollideTick {
 };
 
 std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t chunk,
-                                             const PathStarts& st, std::size_t b, std::size_t e) {
+                                             const PathStarts& st, std::size_t b, std::size_t e,
+                                             BlockCandidates* shared) {
     const Context& c = t.context;
     const FlakePool& f = *c.pool;
     const float* px = f.px.data();
@@ -383,9 +417,16 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
         slots[candidates] = static_cast<std::uint32_t>(b + j);
         candidates += flags[j];
     }
+    if (shared != nullptr) {
+        shared->count = candidates - first;
+        std::copy(slots + first, slots + candidates, shared->slots);
+    }
     std::uint32_t n = first;
     for (std::uint32_t k = first; k < candidates; ++k) {
         const std::uint32_t i = slots[k];
+        if (c.shared && !own_flag(c, st, i)) {
+            continue; // flagged for deposit alone
+        }
         // Colliders first: a flake whose path crosses a roof and ends below the
         // bounds floor in the same tick is stopped by the roof, not removed.
         if (std::isfinite(px[i]) && std::isfinite(py[i]) && std::isfinite(pz[i])) {
@@ -479,6 +520,7 @@ CollideTick& collide_begin(World& w) {
     c = Context{};
     c.pool = &pool;
     c.grid = &grid;
+    c.reach = grid.cell_reach.data();
     const auto* map = w.try_resource<OcclusionMap>();
     c.map = map != nullptr && map->width > 0 && !grid.meshes.empty() ? map : nullptr;
     if (c.map != nullptr) {
@@ -512,6 +554,45 @@ CollideTick& collide_begin(World& w) {
                            : std::numeric_limits<float>::infinity();
     c.scratch = &scratch;
     return *t;
+}
+
+void collide_share_flags(CollideTick& t, const DepositBins& bins) {
+    CollideScratch& s = t.scratch;
+    const ColliderGrid& g = *t.context.grid;
+    if (!s.shared_built || s.shared_solids_version != g.solids_version ||
+        s.shared_surfaces_version != g.surfaces_version ||
+        s.shared_tops_version != bins.tops_version) {
+        // Each cell's table entries raised to the highest bin top over it: a
+        // flake deposit's prefilter flags is at or below its bin's top, so at
+        // or below this (its path's lower end too). The cell's rectangle is
+        // widened by a hundredth of a cell for the rounding of cell_x/cell_z.
+        s.shared_reach = g.cell_reach;
+        const BinGrid& bg = bins.grid;
+        for (std::uint32_t j = 0; j < g.nz; ++j) {
+            const float z0 = g.z0 + (static_cast<float>(j) - 0.01f) * g.cell_size_z;
+            const float z1 = g.z0 + (static_cast<float>(j) + 1.01f) * g.cell_size_z;
+            for (std::uint32_t i = 0; i < g.nx; ++i) {
+                const float x0 = g.x0 + (static_cast<float>(i) - 0.01f) * g.cell_size_x;
+                const float x1 = g.x0 + (static_cast<float>(i) + 1.01f) * g.cell_size_x;
+                float top = -std::numeric_limits<float>::infinity();
+                for (std::uint32_t bz = bg.row(z0); bz <= bg.row(z1); ++bz) {
+                    for (std::uint32_t bx = bg.column(x0); bx <= bg.column(x1); ++bx) {
+                        top =
+                            std::max(top, bins.bin_top[static_cast<std::size_t>(bz) * bg.nbx + bx]);
+                    }
+                }
+                const std::size_t cell = static_cast<std::size_t>(j) * g.nx + i;
+                s.shared_reach[2 * cell] = std::max(s.shared_reach[2 * cell], top);
+                s.shared_reach[2 * cell + 1] = std::max(s.shared_reach[2 * cell + 1], top);
+            }
+        }
+        s.shared_built = true;
+        s.shared_solids_version = g.solids_version;
+        s.shared_surfaces_version = g.surfaces_version;
+        s.shared_tops_version = bins.tops_version;
+    }
+    t.context.reach = s.shared_reach.data();
+    t.context.shared = true;
 }
 
 void collide_end(World& w, const CollideTick& t) {

@@ -92,37 +92,57 @@ bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uin
 } // namespace
 
 /// Detection over slots [b, e). The bins' branch-free pass over positions
-/// flags flakes low enough to land on some surface under them; only those
-/// get the exact test, against the start of their path this tick.
+/// flags flakes low enough to land on some surface under them (or, with
+/// `shared`, the same test on the slots the pass's shared prefilter listed:
+/// every flake it would flag is among them); only those get the exact test,
+/// against the start of their path this tick.
 void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st, std::size_t b,
-                   std::size_t e, std::span<const std::uint32_t> removed) {
+                   std::size_t e, std::span<const std::uint32_t> removed,
+                   const BlockCandidates* shared) {
     const DepositBins& d = p.bins;
     std::vector<LandingRecord>& out = p.chunks[chunk];
     const float* px = p.pool->px.data();
     const float* py = p.pool->py.data();
     const float* pz = p.pool->pz.data();
+    std::size_t next_removed = 0;
+    const auto consider = [&](std::uint32_t slot) {
+        const float y_start = st.y[slot - st.base];
+        if (!d.may_land(py[slot], y_start) || skipped(removed, next_removed, slot)) {
+            return;
+        }
+        std::uint32_t bin = 0;
+        LandingRecord rec{};
+        if (p.pool->mass_units[slot] != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
+            find_landing(p, bin, slot, y_start, rec)) {
+            out.push_back(rec);
+        }
+    };
+    if (shared != nullptr) {
+        for (std::size_t k = 0; k < shared->count; ++k) {
+            const std::uint32_t slot = shared->slots[k];
+            std::uint8_t flag = 0;
+            flag_deposit_candidates(d, px + slot, py + slot, pz + slot, 1, &flag);
+            if (flag != 0) {
+                consider(slot);
+            }
+        }
+        return;
+    }
     alignas(64) std::uint8_t flag[flake_block];
     const std::size_t m = e - b;
     flag_deposit_candidates(d, px + b, py + b, pz + b, m, flag);
     std::fill(flag + m, flag + flake_block, std::uint8_t{0});
-    std::size_t next_removed = 0;
     for (std::size_t j = 0; j < m; j += 8) {
         std::uint64_t word = 0;
         std::memcpy(&word, flag + j, sizeof word);
         for (; word != 0; word &= word - 1) {
-            const auto slot = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
-            const float y_start = st.y[slot - st.base];
-            if (!d.may_land(py[slot], y_start) || skipped(removed, next_removed, slot)) {
-                continue;
-            }
-            std::uint32_t bin = 0;
-            LandingRecord rec{};
-            if (p.pool->mass_units[slot] != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
-                find_landing(p, bin, slot, y_start, rec)) {
-                out.push_back(rec);
-            }
+            consider(static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8));
         }
     }
+}
+
+const DepositBins& deposit_bins(const DepositTick& t) {
+    return t.bins;
 }
 
 namespace {

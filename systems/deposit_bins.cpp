@@ -106,6 +106,7 @@ void refresh_tops(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
     if (!changed) {
         return;
     }
+    ++d.tops_version;
     constexpr float inf = std::numeric_limits<float>::infinity();
     d.floor_top = -inf;
     d.upper_bare = inf;

@@ -65,6 +65,7 @@ struct DepositBins {
     float upper_bare = 0.0f; ///< min over bins: lowest bare top of the others, less tolerance
     BinGrid grid;
     std::vector<float> bin_top;           ///< -inf where no surface
+    std::uint64_t tops_version = 0;       ///< counts the changes of bin_top
     std::vector<std::uint32_t> bin_start; ///< bin b lists bin_items[bin_start[b], bin_start[b+1])
     std::vector<std::uint32_t> bin_items; ///< surface indices, ascending
 

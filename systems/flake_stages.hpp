@@ -48,6 +48,16 @@ PathStarts stage_path_starts(World& w);
 struct IntegrateTick;
 struct CollideTick;
 struct DepositTick;
+struct DepositBins;
+
+/// The slots of one block that the flake pass's shared prefilter flagged
+/// (ascending): collide's prefilter with its reach raised to the deposit
+/// bins' tops (collide_share_flags), so the one list holds every flake
+/// either stage must look at and deposit needs no prefilter pass of its own.
+struct BlockCandidates {
+    std::uint32_t slots[flake_block];
+    std::size_t count = 0;
+};
 
 /// Integrate ([WF §3], [ZCL §III.C]): the rule of SimConfig::integrator for
 /// slots [b, e) of chunk `chunk`, in place, their old positions to `starts`.
@@ -59,18 +69,26 @@ void integrate_end(World& w, const IntegrateTick& t);
 /// Collide ([WF §4], [SKY]): bounds, spheres, boxes, mesh tops and bodies for
 /// slots [b, e). Returns the slots of the block it will remove (ascending),
 /// which the later stages skip.
+/// With `shared`, the block's flagged slots (collide's and deposit's) are
+/// also listed there for deposit_block; collide tests only its own among them.
 CollideTick& collide_begin(World& w);
+/// Makes this tick's prefilter flag every flake deposit's prefilter would
+/// flag too (for the flake pass; a stage run alone keeps its own flags).
+void collide_share_flags(CollideTick& t, const DepositBins& bins);
 std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t chunk,
-                                             const PathStarts& starts, std::size_t b,
-                                             std::size_t e);
+                                             const PathStarts& starts, std::size_t b, std::size_t e,
+                                             BlockCandidates* shared = nullptr);
 void collide_end(World& w, const CollideTick& t);
 
 /// Deposit ([WF §4], [ZCL §IV]): landings of slots [b, e) other than
-/// `removed` (ascending). Begin returns null when nothing can land (no
-/// surface or no flake): then the stage is skipped.
+/// `removed` (ascending); with `shared`, only its slots are looked at (the
+/// pass's shared prefilter already passed over the rest). Begin returns null
+/// when nothing can land (no surface or no flake): then the stage is skipped.
 DepositTick* deposit_begin(World& w);
+[[nodiscard]] const DepositBins& deposit_bins(const DepositTick& t);
 void deposit_block(const DepositTick& t, std::size_t chunk, const PathStarts& starts, std::size_t b,
-                   std::size_t e, std::span<const std::uint32_t> removed);
+                   std::size_t e, std::span<const std::uint32_t> removed,
+                   const BlockCandidates* shared = nullptr);
 void deposit_end(World& w, const DepositTick& t);
 
 } // namespace snow
