@@ -41,11 +41,24 @@ struct LandingRecord {
 struct DepositTick {
     DepositBins bins;
     mutable std::vector<std::vector<LandingRecord>> chunks; ///< each written by its chunk's blocks
+    /// Per chunk: the slots its bin test passed this tick (each written by
+    /// its chunk's blocks).
+    mutable std::vector<std::uint32_t> passed;
+    std::uint64_t scanned = 0; ///< slots this tick's blocks cover
+    /// Last tick's bin test passed at most 1 slot in sparse_share: the pass
+    /// then shares collide's prefilter (every flake it lists costs a second
+    /// test, which pays only while they are few).
+    bool sparse = false;
     const FlakePool* pool = nullptr;
     const SnowSurface* surfaces = nullptr;
 };
 
 namespace {
+
+/// See DepositTick::sparse: in the yard benchmark about 1 slot in 140
+/// passes the bin test and sharing saves 5–7 % of a tick; in the village
+/// about 1 in 7 does and sharing cost 20 % (docs/performance.md).
+constexpr std::uint64_t sparse_share = 50;
 
 /// The surface flake `slot` lands on this tick, if any: it reached the snow
 /// top from above (crossed it this tick, sits on it, or is inside the snow
@@ -117,12 +130,14 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
             out.push_back(rec);
         }
     };
+    std::uint32_t& passed = p.passed[chunk];
     if (shared != nullptr) {
         for (std::size_t k = 0; k < shared->count; ++k) {
             const std::uint32_t slot = shared->slots[k];
             std::uint8_t flag = 0;
             flag_deposit_candidates(d, px + slot, py + slot, pz + slot, 1, &flag);
             if (flag != 0) {
+                ++passed;
                 consider(slot);
             }
         }
@@ -136,9 +151,15 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
         std::uint64_t word = 0;
         std::memcpy(&word, flag + j, sizeof word);
         for (; word != 0; word &= word - 1) {
+            ++passed;
             consider(static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8));
         }
     }
+}
+
+bool deposit_prefilter_sparse(const World& w) {
+    const auto* t = w.try_resource<DepositTick>();
+    return t != nullptr && t->sparse;
 }
 
 const DepositBins& deposit_bins(const DepositTick& t) {
@@ -191,6 +212,15 @@ DepositTick* deposit_begin(World& w) {
     for (auto& c : d->chunks) {
         c.clear();
     }
+    // Last tick's share of slots that passed the bin test (the counts are
+    // only a choice of path: both give the same landings).
+    std::uint64_t passed = 0;
+    for (const std::uint32_t n : d->passed) {
+        passed += n;
+    }
+    d->sparse = d->scanned > 0 && passed * sparse_share <= d->scanned;
+    d->passed.assign(chunk_count, 0);
+    d->scanned = pool.slot_end;
     d->pool = &pool;
     d->surfaces = surfaces.data();
     return d;

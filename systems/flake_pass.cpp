@@ -5,9 +5,10 @@
 // the records are applied in the stages' own order (stiff counts, removals in
 // slot order, then landings in slot order), so the result is the same as the
 // three stages run one after another over the whole pool
-// (FlakePass.SameAsStagesOneAtATime) and for any thread count. Collide's
-// prefilter, its reach raised to the deposit bins' tops, flags for both
-// stages, so deposit reads the listed slots instead of the whole block.
+// (FlakePass.SameAsStagesOneAtATime) and for any thread count. While few
+// flakes are low enough to land, collide's prefilter, its reach raised to
+// the deposit bins' tops, flags for both stages, so deposit reads the listed
+// slots instead of the whole block.
 #include "systems/flake_pool.hpp"
 #include "systems/flake_stages.hpp"
 #include "systems/jobs.hpp"
@@ -52,22 +53,22 @@ void flake_pass_system(World& w) {
     // Nothing can land without a surface: that stage is skipped (as its own
     // system it needs a SnowSurface; docs/design.md "What is declared runs").
     const DepositTick* de = deposit_begin(w);
-    if (de != nullptr) {
-        // One prefilter pass for both stages (docs/performance.md "Shared
-        // prefilter"): collide's flags then hold every flake deposit's would.
+    // One prefilter pass for both stages while few flakes are low enough to
+    // land (docs/performance.md "Shared prefilter"): collide's flags then
+    // hold every flake deposit's would.
+    const bool share = de != nullptr && deposit_prefilter_sparse(w);
+    if (share) {
         collide_share_flags(co, deposit_bins(*de));
     }
     for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
         alignas(64) float x[flake_block], y[flake_block], z[flake_block];
         const PathStarts starts{x, y, z, b};
         integrate_block(in, chunk, starts, b, e);
-        if (de == nullptr) {
-            collide_block(co, chunk, starts, b, e);
-            return;
-        }
         BlockCandidates flagged;
-        const auto removed = collide_block(co, chunk, starts, b, e, &flagged);
-        deposit_block(*de, chunk, starts, b, e, removed, &flagged);
+        const auto removed = collide_block(co, chunk, starts, b, e, share ? &flagged : nullptr);
+        if (de != nullptr) {
+            deposit_block(*de, chunk, starts, b, e, removed, share ? &flagged : nullptr);
+        }
     });
     integrate_end(w, in);
     collide_end(w, co);

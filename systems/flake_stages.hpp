@@ -86,6 +86,10 @@ void collide_end(World& w, const CollideTick& t);
 /// when nothing can land (no surface or no flake): then the stage is skipped.
 DepositTick* deposit_begin(World& w);
 [[nodiscard]] const DepositBins& deposit_bins(const DepositTick& t);
+/// Whether the flake pass shares collide's prefilter this tick (after
+/// deposit_begin): when few slots passed deposit's own last tick (a choice
+/// of speed only: both ways give the same landings).
+[[nodiscard]] bool deposit_prefilter_sparse(const World& w);
 void deposit_block(const DepositTick& t, std::size_t chunk, const PathStarts& starts, std::size_t b,
                    std::size_t e, std::span<const std::uint32_t> removed,
                    const BlockCandidates* shared = nullptr);

@@ -1,5 +1,6 @@
 // The flake pass (integrate, collide and deposit per block of slots) against
 // the three stages run one after another over the whole pool.
+#include "systems/flake_stages.hpp"
 #include "systems/internal_access.hpp"
 #include "systems/mass_ledger.hpp"
 #include "systems/sample_scenes.hpp"
@@ -29,8 +30,10 @@ TEST(FlakePass, SameAsStagesOneAtATime) {
         }
         ASSERT_GT(fused->flakes().alive, 1000u) << "the air must hold flakes to compare";
         const std::uint32_t alive_before = fused->flakes().alive;
+        int shared = 0;
         for (int t = 0; t < 30; ++t) {
             flake_pass_system(InternalAccess::world(*fused));
+            shared += deposit_prefilter_sparse(InternalAccess::world(*fused)) ? 1 : 0;
             World& w = InternalAccess::world(*staged);
             integrate_system(w);
             collide_system(w);
@@ -38,6 +41,7 @@ TEST(FlakePass, SameAsStagesOneAtATime) {
             ASSERT_EQ(fused->state_hash(), staged->state_hash()) << "pass " << t;
         }
         EXPECT_LT(fused->flakes().alive, alive_before) << "flakes landed or left meanwhile";
+        EXPECT_GT(shared, 0) << "the shared prefilter must have run";
         EXPECT_TRUE(fused->mass().balanced());
     }
 }
