@@ -54,8 +54,8 @@ void flake_pass_system(World& w) {
     // system it needs a SnowSurface; docs/design.md "What is declared runs").
     const DepositTick* de = deposit_begin(w);
     // One prefilter pass for both stages while few flakes are low enough to
-    // land (docs/performance.md "Shared prefilter"): collide's flags then
-    // hold every flake deposit's would.
+    // land (docs/performance.md, "one prefilter for two stages"): collide's
+    // flags then hold every flake deposit's would.
     const bool share = de != nullptr && deposit_prefilter_sparse(w);
     if (share) {
         collide_share_flags(co, deposit_bins(*de));
