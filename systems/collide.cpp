@@ -330,7 +330,8 @@ template <bool with_bodies>
     // a few cm a tick. A signed 32-bit index: GCC gathers with it
     // (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
     const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
-    const bool same_cell = (g.cell_x(x0) == cx) & (g.cell_z(z0) == cz);
+    const std::uint32_t start_x = g.cell_x(x0), start_z = g.cell_z(z0);
+    const bool same_cell = (start_x == cx) & (start_z == cz);
     const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
     const float top = reach[2 * cell + (same_cell ? 0 : 1)];
     const bool low = !((y < y0 ? y : y0) > top);
