@@ -134,19 +134,18 @@ struct Tracer {
     }
 };
 
-/// Trilinear along x on one line of the source: between samples i − 1 and i
-/// when `back`, else i and i + 1 (the arithmetic of trilinear_corners).
-[[gnu::always_inline]] inline float lerp_line(const float* line, std::int32_t i, bool back,
-                                              float t) {
-    const float m = line[i - 1], c = line[i], p = line[i + 1];
-    const float lo = back ? m : c, hi = back ? c : p;
-    return lo + t * (hi - lo);
-}
-
-/// The lerp between two of three values: (a, b) when `back`, else (b, c).
+/// The lerp between two of three values: (a, b) when `back`, else (b, c);
+/// the arithmetic of trilinear_corners.
 [[gnu::always_inline]] inline float lerp_pick(float a, float b, float c, bool back, float t) {
     const float lo = back ? a : b, hi = back ? b : c;
     return lo + t * (hi - lo);
+}
+
+/// The lerp along x on one line of the source: between samples i − 1 and i
+/// when `back`, else i and i + 1.
+[[gnu::always_inline]] inline float lerp_line(const float* line, std::int32_t i, bool back,
+                                              float t) {
+    return lerp_pick(line[i - 1], line[i], line[i + 1], back, t);
 }
 
 /// Faces the advection reads in one vector loop: an AVX-512 register of
