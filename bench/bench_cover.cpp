@@ -30,8 +30,8 @@ std::unique_ptr<Simulation> make_covered_yard(std::uint32_t side, unsigned threa
     auto sim = std::make_unique<Simulation>(c);
     const float reach = 0.5f * cell * static_cast<float>(side); // the cover's half extent
     const float g = std::max(half, reach);
-    sim->add_mesh_collider({{-g, 0.0f, -g}, {g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, -g},
-                            {g, 0.0f, g}, {-g, 0.0f, g}});
+    sim->add_mesh_collider(
+        {{-g, 0.0f, -g}, {g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, g}});
     for (int k = 0; k < 4; ++k) {
         const float x = -5.5f + 2.8f * static_cast<float>(k);
         sim->add_box({{x, 0.0f, -5.0f}, {x + 2.0f, 2.0f + 0.5f * static_cast<float>(k), -2.5f}});

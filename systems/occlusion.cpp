@@ -20,7 +20,6 @@ namespace snow {
 
 namespace {
 
-
 /// Where and how the map is laid out; a change from the stored one means a refresh.
 struct Layout {
     float x0 = 0.0f, z0 = 0.0f, texel = 1.0f;

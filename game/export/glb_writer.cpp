@@ -34,7 +34,8 @@ int add_view(nlohmann::ordered_json& views, std::vector<std::uint8_t>& bin, cons
              std::size_t size, int target) {
     const std::size_t offset = bin.size();
     bin.resize(offset + size);
-    if (size != 0) std::memcpy(bin.data() + offset, bytes, size);
+    if (size != 0)
+        std::memcpy(bin.data() + offset, bytes, size);
     bin.resize((bin.size() + 3) & ~std::size_t{3}, 0);
     views.push_back(
         {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}, {"target", target}});

@@ -106,7 +106,8 @@ inline std::vector<unsigned char> mesh_bytes(const std::vector<float>& xyz,
                                              const std::vector<std::uint16_t>& indices) {
     std::vector<unsigned char> b(xyz.size() * 4 + indices.size() * 2);
     // memcpy from an empty vector's null data() is undefined even for 0 bytes.
-    if (!xyz.empty()) std::memcpy(b.data(), xyz.data(), xyz.size() * 4);
+    if (!xyz.empty())
+        std::memcpy(b.data(), xyz.data(), xyz.size() * 4);
     if (!indices.empty())
         std::memcpy(b.data() + xyz.size() * 4, indices.data(), indices.size() * 2);
     return b;
