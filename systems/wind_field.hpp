@@ -146,15 +146,21 @@ struct WindSampler {
     glm::vec3 inv_cell; ///< 1 / cell edge (1/m)
     glm::vec3 cells;    ///< cells per axis, as floats
 
+    /// Where a read at world point (x, y, z) falls in the centre lattice;
+    /// points outside the bounds are clamped onto the nearest boundary.
+    [[gnu::always_inline]] LatticePoint point(float x, float y, float z) const {
+        const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
+        const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
+        const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
+        return locate(centre, gx, gy, gz);
+    }
+
     /// Wind at world point (x, y, z) in held steps, trilinear between cell
     /// centres; points outside the bounds read the nearest boundary value.
     /// Scalars out and always inlined, so flake loops vectorise.
     [[gnu::always_inline]] void steps_at(float x, float y, float z, float& wx, float& wy,
                                          float& wz) const {
-        const float gx = clamp_value((x - origin.x) * inv_cell.x, 0.0f, cells.x);
-        const float gy = clamp_value((y - origin.y) * inv_cell.y, 0.0f, cells.y);
-        const float gz = clamp_value((z - origin.z) * inv_cell.z, 0.0f, cells.z);
-        const LatticePoint p = locate(centre, gx, gy, gz);
+        const LatticePoint p = point(x, y, z);
         const std::int32_t sy = centre.dim[0], sz = centre.dim[0] * centre.dim[1];
         const std::uint64_t corner[8] = {
             c[p.base],      c[p.base + 1],      c[p.base + sy],      c[p.base + sy + 1],

@@ -140,15 +140,6 @@ void windy_columns(const WindField& f, float threshold, TransportScratch& scratc
     }
 }
 
-/// The lower corner along one axis of a field read at `at` (m): as
-/// WindSampler's locate() finds it.
-std::uint32_t corner_of(const WindField& f, int axis, float at) {
-    const float g =
-        clamp_value((at - f.origin[axis]) * f.inv_cell[axis], 0.0f, static_cast<float>(f.n[axis]));
-    return static_cast<std::uint32_t>(
-        std::min(static_cast<std::int32_t>(g + f.centre.shift[axis]), f.centre.last[axis]));
-}
-
 /// Plans the moves of every windy tile of `s`, row by row. A tile whose
 /// centre's field read has a calm lower corner (windy_columns) is calm
 /// without the read, and a row of tiles over a calm row of corners is
@@ -161,15 +152,17 @@ void plan_surface(const SnowSurface& s, const WindField& f, const TransportScrat
     for (std::uint32_t tz = 0; tz < s.tiles_z(); ++tz) {
         const std::uint32_t z0 = tz * side, z1 = std::min(z0 + side, s.nz);
         const std::uint32_t cz = (z0 + z1) / 2; // the centre cell wind_over reads
-        const std::uint32_t k = corner_of(f, 2, s.z0 + (static_cast<float>(cz) + 0.5f) * s.cell);
+        const float z = s.z0 + (static_cast<float>(cz) + 0.5f) * s.cell;
+        // The read's lower corner in x and z (its height does not move them).
+        const auto k = static_cast<std::size_t>(air.point(f.origin.x, f.origin.y, z).k);
         if (scratch.windy_row[k] == 0) {
             continue;
         }
         for (std::uint32_t tx = 0; tx < s.tiles_x(); ++tx) {
             const std::uint32_t x0 = tx * side, x1 = std::min(x0 + side, s.nx);
             const std::uint32_t cx = (x0 + x1) / 2;
-            const std::uint32_t i =
-                corner_of(f, 0, s.x0 + (static_cast<float>(cx) + 0.5f) * s.cell);
+            const float x = s.x0 + (static_cast<float>(cx) + 0.5f) * s.cell;
+            const auto i = static_cast<std::size_t>(air.point(x, f.origin.y, z).i);
             if (scratch.windy[k * dim_x + i] == 0) {
                 continue;
             }
