@@ -1,10 +1,15 @@
 # Project-wide compile settings, applied per target with snow_set_options().
 # Determinism (docs/design.md "Determinism"): never -ffast-math; -ffp-contract=off so no FMA fusion
 # changes results between scalar/SIMD or Debug/Release builds.
+# GCC: -fno-tree-loop-distribute-patterns, so a vectorised loop that also copies
+# an array (integrate keeps each flake's path start) stays one loop; GCC would
+# split the copy out into memmove calls, a second pass over the block (a sixth
+# of the 1M-flake tick; docs/performance.md).
 function(snow_set_options target)
     target_compile_options(${target} PRIVATE
         -Wall -Wextra -Wpedantic -Werror
-        -ffp-contract=off -fno-trapping-math)
+        -ffp-contract=off -fno-trapping-math
+        $<$<CXX_COMPILER_ID:GNU>:-fno-tree-loop-distribute-patterns>)
     if(SNOW_NATIVE)
         target_compile_options(${target} PRIVATE -march=native)
     endif()
