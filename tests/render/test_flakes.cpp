@@ -78,6 +78,40 @@ TEST(RenderFlakes, LevelOfDetailThinsOnlyFarFlakesAndIsStable) {
     EXPECT_EQ(select_flakes(pool, sel, out), 20000u);
 }
 
+TEST(RenderFlakes, SelectionKeepsSlotOrderWhateverTheMixOfKeptAndSkipped) {
+    // Slots alive or freed, in view or behind the eye, in a fixed irregular
+    // mix over several blocks and a count that is no multiple of 16: the
+    // output is exactly the kept flakes' records, in slot order.
+    constexpr std::uint32_t n = 5003;
+    FlakePool pool;
+    pool.reset(n);
+    std::vector<float> expected;
+    std::vector<std::uint32_t> freed_slots;
+    std::uint32_t h = 12345u;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        h = h * 1664525u + 1013904223u;
+        const bool in_view = (h >> 28) % 3 != 0;
+        const bool freed = (h >> 24) % 5 == 0;
+        const float x = 0.001f * static_cast<float>(i % 997), size = 0.01f + 1.0e-6f * i;
+        const glm::vec3 p{x, 0.0f, in_view ? -5.0f : 5.0f};
+        const std::uint32_t slot = add_flake(pool, p, size);
+        if (freed) {
+            freed_slots.push_back(slot);
+        } else if (in_view) {
+            expected.insert(expected.end(), {p.x, p.y, p.z, size * 1.5f});
+        }
+    }
+    for (const std::uint32_t slot : freed_slots) {
+        pool.release(slot); // after all are placed: a freed slot is the next one handed out
+    }
+    std::vector<float> out(4 * pool.capacity());
+    FlakeSelection sel = selection_for(looking_down_minus_z());
+    sel.size_scale = 1.5f;
+    const std::uint32_t kept = select_flakes(pool, sel, out);
+    ASSERT_EQ(4 * kept, expected.size());
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), out.begin()));
+}
+
 /// Brightest channel value anywhere in the image.
 int peak(const Image& img) {
     int m = 0;
