@@ -61,6 +61,7 @@ struct CollideScratch {
     /// the deposit bins' tops, collide_share_flags), rebuilt from the grid's
     /// versions and the bins' tops_version.
     std::vector<float> shared_reach;
+    std::vector<float> shared_row_reach; ///< row_tops() of shared_reach
     bool shared_built = false;
     std::uint64_t shared_solids_version = 0;
     std::uint64_t shared_surfaces_version = 0;
@@ -72,6 +73,7 @@ struct Context {
     const ColliderGrid* grid = nullptr;
     /// The prefilter's table: grid->cell_reach, or the pass's shared one.
     const float* reach = nullptr;
+    const float* row_reach = nullptr;  ///< row_tops() of reach
     bool shared = false;               ///< reach is the shared table
     const OcclusionMap* map = nullptr; ///< null when no usable map exists
     const float* mesh_block_top = nullptr;
@@ -311,40 +313,57 @@ Outcome resolve(const Context& c, const PathStarts& st, std::size_t i) {
     return out;
 }
 
+/// The prefilter's bound for one path: the entry of the tick's table that
+/// applies to it (ColliderGrid::cell_reach's layout). A path that starts and
+/// ends in one cell can meet only what is over that cell: most paths, as a
+/// flake moves a few cm a tick. A signed 32-bit index: GCC gathers with it
+/// (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
+struct CellTop {
+    const ColliderGrid* grid;
+    const float* reach;
+    [[gnu::always_inline]] float at(float x, float z, float x0, float z0) const {
+        const ColliderGrid& g = *grid;
+        const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
+        const std::uint32_t start_x = g.cell_x(x0), start_z = g.cell_z(z0);
+        const bool same_cell = (start_x == cx) & (start_z == cz);
+        const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
+        return reach[2 * cell + (same_cell ? 0 : 1)];
+    }
+};
+
+/// One bound for every path of a block: the highest entry over the rows of
+/// cells the block's paths end in (block_top()). No table read per flake.
+struct BlockTop {
+    float top;
+    [[gnu::always_inline]] float at(float, float, float, float) const { return top; }
+};
+
 /// Whether the flake at (x, y, z), whose path this tick started at (x0, y0,
 /// z0), may need work: out of bounds, on a long path, or low enough to meet
-/// a collider near it by `reach` (ColliderGrid::cell_reach's layout). Selects
-/// only, so a loop over flakes vectorises. Without bodies the box test is
-/// left out (its empty box flags nothing): a tenth of the work.
-template <bool with_bodies>
-[[gnu::always_inline]] inline bool needs_tests(const Context& c, const float* reach, float x,
+/// a collider near it by `bound`. Selects only, so a loop over flakes
+/// vectorises. Without bodies the box test is left out (its empty box flags
+/// nothing): a tenth of the work.
+template <bool with_bodies, typename Bound>
+[[gnu::always_inline]] inline bool needs_tests(const Context& c, const Bound& bound, float x,
                                                float y, float z, float x0, float y0, float z0,
                                                std::uint32_t mass) {
-    const ColliderGrid& g = *c.grid;
     const Aabb& bb = c.bounds;
     // [WF §4]: flakes outside the world's bounds are deactivated (NaN too).
     const bool inside = (x >= bb.min.x) & (x <= bb.max.x) & (y >= bb.min.y) & (y <= bb.max.y) &
                         (z >= bb.min.z) & (z <= bb.max.z);
-    // A path that starts and ends in one cell can meet only what is over
-    // that cell (ColliderGrid::cell_reach): most paths, as a flake moves
-    // a few cm a tick. A signed 32-bit index: GCC gathers with it
-    // (vgatherdps); an unsigned one it widens to 64 bits and loads lane by lane.
-    const std::uint32_t cx = g.cell_x(x), cz = g.cell_z(z);
-    const std::uint32_t start_x = g.cell_x(x0), start_z = g.cell_z(z0);
-    const bool same_cell = (start_x == cx) & (start_z == cz);
-    const auto cell = static_cast<std::int32_t>(cz * g.nx + cx);
-    const float top = reach[2 * cell + (same_cell ? 0 : 1)];
+    const float top = bound.at(x, z, x0, z0);
     const bool low = !((y < y0 ? y : y0) > top);
     const bool far = is_long(c, x - x0, y - y0, z - z0);
     const bool body = with_bodies && path_near(c.body_box, x, y, z, x0, y0, z0);
     return (mass != 0) & (!inside | low | far | body);
 }
 
-/// Marks the flakes of [b, e) that needs_tests() picks by the tick's table;
-/// most flakes are above everything near them and are never looked at again.
-template <bool with_bodies>
-void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
-                std::uint8_t* __restrict flags) {
+/// Marks the flakes of [b, e) that needs_tests() picks by `bound`; returns
+/// how many. Most flakes are above everything near them and are never looked
+/// at again.
+template <bool with_bodies, typename Bound>
+std::uint32_t flag_block(const Context& c, const Bound& bound, const PathStarts& st, std::size_t b,
+                         std::size_t e, std::uint8_t* __restrict flags) {
     const FlakePool& f = *c.pool;
     const std::uint32_t* mass = f.mass_units.data() + b;
     const float* px = f.px.data() + b;
@@ -353,12 +372,47 @@ void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size
     const float* sx = st.x + (b - st.base);
     const float* sy = st.y + (b - st.base);
     const float* sz = st.z + (b - st.base);
-    const Context local = c; // a copy: the flag stores cannot alias it
+    const Context local = c; // copies: the flag stores cannot alias them
+    const Bound local_bound = bound;
+    std::uint32_t count = 0;
     for (std::size_t j = 0; j < e - b; ++j) {
-        flags[j] = needs_tests<with_bodies>(local, local.reach, px[j], py[j], pz[j], sx[j], sy[j],
-                                            sz[j], mass[j])
-                       ? 1
-                       : 0;
+        const bool flag = needs_tests<with_bodies>(local, local_bound, px[j], py[j], pz[j], sx[j],
+                                                   sy[j], sz[j], mass[j]);
+        flags[j] = flag ? 1 : 0;
+        count += flag ? 1u : 0u;
+    }
+    return count;
+}
+
+/// The highest entry of the tick's table over the rows of cells the paths of
+/// [b, e) end in (free slots too: a wider bound, never a narrower one).
+float block_top(const Context& c, std::size_t b, std::size_t e) {
+    const ColliderGrid& g = *c.grid;
+    const float* pz = c.pool->pz.data() + b;
+    std::uint32_t lo = g.nz - 1, hi = 0;
+    for (std::size_t j = 0; j < e - b; ++j) {
+        const std::uint32_t row = g.cell_z(pz[j]);
+        lo = row < lo ? row : lo;
+        hi = row > hi ? row : hi;
+    }
+    float top = -std::numeric_limits<float>::infinity();
+    for (std::uint32_t row = lo; row <= hi; ++row) {
+        top = std::max(top, c.row_reach[row]);
+    }
+    return top;
+}
+
+/// Flags the flakes of [b, e) that may need work (needs_tests()). The
+/// block's one bound first: where it picks few (most blocks: the tallest
+/// collider in their rows is below most of their flakes), those few go on
+/// to the exact tests, which clear what the wider bound let through;
+/// otherwise the table's entry per flake.
+template <bool with_bodies>
+void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
+                std::uint8_t* flags) {
+    const std::uint32_t few = static_cast<std::uint32_t>(e - b) / 32;
+    if (flag_block<with_bodies>(c, BlockTop{block_top(c, b, e)}, st, b, e, flags) > few) {
+        flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags);
     }
 }
 
@@ -367,10 +421,10 @@ void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size
 bool own_flag(const Context& c, const PathStarts& st, std::size_t i) {
     const FlakePool& f = *c.pool;
     const std::size_t o = i - st.base;
-    const float* reach = c.grid->cell_reach.data();
-    return c.body_count > 0 ? needs_tests<true>(c, reach, f.px[i], f.py[i], f.pz[i], st.x[o],
-                                                st.y[o], st.z[o], f.mass_units[i])
-                            : needs_tests<false>(c, reach, f.px[i], f.py[i], f.pz[i], st.x[o],
+    const CellTop own{c.grid, c.grid->cell_reach.data()};
+    return c.body_count > 0 ? needs_tests<true>(c, own, f.px[i], f.py[i], f.pz[i], st.x[o], st.y[o],
+                                                st.z[o], f.mass_units[i])
+                            : needs_tests<false>(c, own, f.px[i], f.py[i], f.pz[i], st.x[o],
                                                  st.y[o], st.z[o], f.mass_units[i]);
 }
 
@@ -522,6 +576,7 @@ CollideTick& collide_begin(World& w) {
     c.pool = &pool;
     c.grid = &grid;
     c.reach = grid.cell_reach.data();
+    c.row_reach = grid.row_reach.data();
     const auto* map = w.try_resource<OcclusionMap>();
     c.map = map != nullptr && map->width > 0 && !grid.meshes.empty() ? map : nullptr;
     if (c.map != nullptr) {
@@ -587,12 +642,14 @@ void collide_share_flags(CollideTick& t, const DepositBins& bins) {
                 s.shared_reach[2 * cell + 1] = std::max(s.shared_reach[2 * cell + 1], top);
             }
         }
+        row_tops(g, s.shared_reach, s.shared_row_reach);
         s.shared_built = true;
         s.shared_solids_version = g.solids_version;
         s.shared_surfaces_version = g.surfaces_version;
         s.shared_tops_version = bins.tops_version;
     }
     t.context.reach = s.shared_reach.data();
+    t.context.row_reach = s.shared_row_reach.data();
     t.context.shared = true;
 }
 

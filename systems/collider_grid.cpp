@@ -173,7 +173,21 @@ void reach(const World& w, ColliderGrid& g) {
         g.cell_reach[2 * c] = std::max(g.cell_top[c], g.cell_mesh_reach[c]);
         g.cell_reach[2 * c + 1] = around[c];
     }
+    row_tops(g, g.cell_reach, g.row_reach);
 }
+
+} // namespace
+
+void row_tops(const ColliderGrid& g, const std::vector<float>& reach, std::vector<float>& out) {
+    out.assign(g.nz, neg_inf);
+    const std::size_t row = 2 * static_cast<std::size_t>(g.nx);
+    for (std::uint32_t j = 0; j < g.nz; ++j) {
+        const auto first = reach.begin() + static_cast<std::ptrdiff_t>(j * row);
+        out[j] = *std::max_element(first, first + static_cast<std::ptrdiff_t>(row));
+    }
+}
+
+namespace {
 
 void rebuild(World& w, ColliderGrid& g, const Aabb& bounds) {
     collect(w, g);

@@ -65,6 +65,9 @@ struct ColliderGrid {
     /// cell per tick but may have come from one of them. A flake whose path
     /// stays above the one that applies meets nothing.
     std::vector<float> cell_reach;
+    /// Per row of cells, the highest of cell_reach over it (row_tops()): a
+    /// path that ends in the row meets nothing above this.
+    std::vector<float> row_reach;
     std::vector<GridBox> boxes;
     std::vector<GridSphere> spheres;
     std::vector<GridMesh> meshes;        ///< sorted by entity bits (looked up from top_id)
@@ -90,6 +93,12 @@ struct ColliderGrid {
         return static_cast<std::uint32_t>(static_cast<std::int32_t>(u));
     }
 };
+
+/// `out[j]` = the highest of a reach table in ColliderGrid::cell_reach's
+/// layout (two floats per cell) over row j's cells: one bound for a block of
+/// flakes whose paths end within a few rows, read instead of a table entry
+/// per flake.
+void row_tops(const ColliderGrid& g, const std::vector<float>& reach, std::vector<float>& out);
 
 /// Returns the World's ColliderGrid (created if missing), rebuilt first if
 /// the solids or the surfaces changed since it was built (SimConfig::bounds
