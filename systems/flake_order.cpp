@@ -25,11 +25,30 @@ namespace {
 constexpr std::uint32_t free_key = flake_order_bins * flake_order_bins;
 
 /// Column (0 .. bins − 1) of coordinate u given the grid's start and 1/width;
-/// outside, infinite or NaN clamps to the nearest end (NaN: 0).
+/// outside, infinite or NaN clamps to the nearest end (NaN: 0). Selects
+/// only, so the key loop vectorises.
 std::uint32_t column(float u, float start, float inv_width) {
-    const float t = (u - start) * inv_width;
     constexpr auto last = static_cast<float>(flake_order_bins - 1);
-    return !(t >= 1.0f) ? 0u : (t >= last ? flake_order_bins - 1 : static_cast<std::uint32_t>(t));
+    float t = (u - start) * inv_width;
+    t = t > 0.0f ? t : 0.0f; // NaN compares false: column 0
+    t = t < last ? t : last;
+    return static_cast<std::uint32_t>(static_cast<std::int32_t>(t));
+}
+
+/// Each slot's key: its (z, x) column, or free_key when free (sorting after
+/// every column, so free slots land at or past `alive`, where nothing reads
+/// them).
+void slot_keys(const float* __restrict px, const float* __restrict pz,
+               const std::uint32_t* __restrict mass, std::uint32_t end, const Aabb bounds,
+               std::uint32_t* __restrict key) {
+    const float inv_x = static_cast<float>(flake_order_bins) / (bounds.max.x - bounds.min.x);
+    const float inv_z = static_cast<float>(flake_order_bins) / (bounds.max.z - bounds.min.z);
+    const float x0 = bounds.min.x, z0 = bounds.min.z;
+    for (std::uint32_t s = 0; s < end; ++s) {
+        const std::uint32_t c =
+            column(pz[s], z0, inv_z) * flake_order_bins + column(px[s], x0, inv_x);
+        key[s] = mass[s] != 0 ? c : free_key;
+    }
 }
 
 /// a[new slot] = a[old slot] for the `alive` new slots, read through
@@ -72,20 +91,9 @@ void flake_order_system(World& w) {
     FlakePool& f = w.resource<FlakePool>();
     FlakeOrder& o = w.resource<FlakeOrder>();
     const Aabb& bounds = w.resource<SimConfig>().bounds;
-    const float inv_x = static_cast<float>(flake_order_bins) / (bounds.max.x - bounds.min.x);
-    const float inv_z = static_cast<float>(flake_order_bins) / (bounds.max.z - bounds.min.z);
     const std::uint32_t end = f.slot_end;
-    // Keys first, in a loop of its own that vectorises: free slots sort after
-    // every column (and land at or past `alive`, where nothing reads them).
-    const float* px = f.px.data();
-    const float* pz = f.pz.data();
-    const std::uint32_t* mass = f.mass_units.data();
-    std::uint32_t* key = o.keys.data();
-    for (std::uint32_t s = 0; s < end; ++s) {
-        const std::uint32_t c = column(pz[s], bounds.min.z, inv_z) * flake_order_bins +
-                                column(px[s], bounds.min.x, inv_x);
-        key[s] = mass[s] != 0 ? c : free_key;
-    }
+    slot_keys(f.px.data(), f.pz.data(), f.mass_units.data(), end, bounds, o.keys.data());
+    const std::uint32_t* key = o.keys.data();
     std::fill(o.counts.begin(), o.counts.end(), 0u);
     for (std::uint32_t s = 0; s < end; ++s) {
         ++o.counts[key[s] + 1];
