@@ -406,14 +406,14 @@ float block_top(const Context& c, std::size_t b, std::size_t e) {
 /// block's one bound first: where it picks few (most blocks: the tallest
 /// collider in their rows is below most of their flakes), those few go on
 /// to the exact tests, which clear what the wider bound let through;
-/// otherwise the table's entry per flake.
+/// otherwise the table's entry per flake. Returns how many are flagged.
 template <bool with_bodies>
-void flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
-                std::uint8_t* flags) {
+std::uint32_t flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
+                         std::uint8_t* flags) {
     const std::uint32_t few = static_cast<std::uint32_t>(e - b) / 32;
-    if (flag_block<with_bodies>(c, BlockTop{block_top(c, b, e)}, st, b, e, flags) > few) {
-        flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags);
-    }
+    const std::uint32_t n =
+        flag_block<with_bodies>(c, BlockTop{block_top(c, b, e)}, st, b, e, flags);
+    return n > few ? flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags) : n;
 }
 
 /// needs_tests() by the grid's own table, for one flake the shared table
@@ -446,20 +446,18 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
     const float* pz = f.pz.data();
     const Aabb& bb = c.bounds;
     alignas(64) std::uint8_t flags[flake_block];
-    if (c.body_count > 0) {
-        flag_block<true>(c, st, b, e, flags);
-    } else {
-        flag_block<false>(c, st, b, e, flags);
-    }
+    const std::uint32_t flagged = c.body_count > 0 ? flag_block<true>(c, st, b, e, flags)
+                                                   : flag_block<false>(c, st, b, e, flags);
     // The chunk's lists: removals so far, then this block's candidates,
     // compacted in place to its removals.
     std::uint32_t* slots = c.scratch->slots.data() + chunk * flake_grain;
     Removal* reasons = c.scratch->reasons.data() + chunk * flake_grain;
     const std::uint32_t first = c.scratch->counts[chunk];
     // List the flagged slots, 8 flags per word: most words are zero (flakes
-    // high above everything), so the scan costs a load per 8 slots.
+    // high above everything), so the scan costs a load per 8 slots, and
+    // nothing in a block with none flagged.
     std::uint32_t candidates = first;
-    const std::size_t m = e - b;
+    const std::size_t m = flagged > 0 ? e - b : 0;
     const std::size_t whole = m & ~std::size_t{7};
     for (std::size_t j = 0; j < whole; j += 8) {
         std::uint64_t word = 0;
