@@ -384,20 +384,31 @@ std::uint32_t flag_block(const Context& c, const Bound& bound, const PathStarts&
     return count;
 }
 
-/// The highest entry of the tick's table over the rows of cells the paths of
-/// [b, e) end in (free slots too: a wider bound, never a narrower one).
+/// The highest entry of the tick's table over the cells the paths of [b, e)
+/// end in, bounded by their rows and columns (free slots too: a wider
+/// bound, never a narrower one). A row the block spans most of is taken
+/// whole (row_reach): the work stays a few dozen reads per block.
 float block_top(const Context& c, std::size_t b, std::size_t e) {
     const ColliderGrid& g = *c.grid;
+    const float* px = c.pool->px.data() + b;
     const float* pz = c.pool->pz.data() + b;
-    std::uint32_t lo = g.nz - 1, hi = 0;
+    std::uint32_t col_lo = g.nx - 1, col_hi = 0, row_lo = g.nz - 1, row_hi = 0;
     for (std::size_t j = 0; j < e - b; ++j) {
-        const std::uint32_t row = g.cell_z(pz[j]);
-        lo = row < lo ? row : lo;
-        hi = row > hi ? row : hi;
+        const std::uint32_t col = g.cell_x(px[j]), row = g.cell_z(pz[j]);
+        col_lo = col < col_lo ? col : col_lo;
+        col_hi = col > col_hi ? col : col_hi;
+        row_lo = row < row_lo ? row : row_lo;
+        row_hi = row > row_hi ? row : row_hi;
     }
+    const bool whole_rows = col_hi - col_lo >= g.nx / 2;
     float top = -std::numeric_limits<float>::infinity();
-    for (std::uint32_t row = lo; row <= hi; ++row) {
-        top = std::max(top, c.row_reach[row]);
+    for (std::uint32_t row = row_lo; row <= row_hi; ++row) {
+        if (whole_rows) {
+            top = std::max(top, c.row_reach[row]);
+            continue;
+        }
+        const float* entries = c.reach + 2 * (static_cast<std::size_t>(row) * g.nx + col_lo);
+        top = std::max(top, *std::max_element(entries, entries + 2 * (col_hi - col_lo + 1)));
     }
     return top;
 }

@@ -3,9 +3,10 @@
 // order neighbouring slots lie far apart: the flake pass's height and
 // collider lookups then miss the cache on every flake, and the slots freed by
 // landings are streamed for nothing. Every flake_order_every ticks a stable
-// counting sort by (z column, x column) of a grid over the bounds moves the
-// alive flakes, in that order, into slots 0 .. alive − 1: the flakes of a
-// block then lie in a few neighbouring columns and the pool has no holes
+// counting sort by (tile, z column, x column) of a grid over the bounds
+// moves the alive flakes, in that order, into slots 0 .. alive − 1: the
+// flakes of a block then lie in a compact patch of ground (one bound for
+// the collision prefilter, few cells for the lookups) and the pool has no holes
 // (docs/performance.md "Spatial order"). The order is a function of the state
 // alone, so it is the same for any thread count and after a restore.
 #include "systems/flake_order.hpp"
@@ -35,7 +36,8 @@ std::uint32_t column(float u, float start, float inv_width) {
     return static_cast<std::uint32_t>(static_cast<std::int32_t>(t));
 }
 
-/// Each slot's key: its (z, x) column, or free_key when free (sorting after
+/// Each slot's key: its tile, then its (z, x) column in the tile
+/// (flake_order_tile), or free_key when free (sorting after
 /// every column, so free slots land at or past `alive`, where nothing reads
 /// them).
 void slot_keys(const float* __restrict px, const float* __restrict pz,
@@ -44,10 +46,11 @@ void slot_keys(const float* __restrict px, const float* __restrict pz,
     const float inv_x = static_cast<float>(flake_order_bins) / (bounds.max.x - bounds.min.x);
     const float inv_z = static_cast<float>(flake_order_bins) / (bounds.max.z - bounds.min.z);
     const float x0 = bounds.min.x, z0 = bounds.min.z;
+    constexpr std::uint32_t t = flake_order_tile, tiles = flake_order_bins / t;
     for (std::uint32_t s = 0; s < end; ++s) {
-        const std::uint32_t c =
-            column(pz[s], z0, inv_z) * flake_order_bins + column(px[s], x0, inv_x);
-        key[s] = mass[s] != 0 ? c : free_key;
+        const std::uint32_t cz = column(pz[s], z0, inv_z), cx = column(px[s], x0, inv_x);
+        const std::uint32_t tile = (cz / t) * tiles + cx / t;
+        key[s] = mass[s] != 0 ? tile * t * t + (cz % t) * t + cx % t : free_key;
     }
 }
 

@@ -1,7 +1,7 @@
 /// @file flake_order.hpp
 /// @brief Flakes kept in spatial order: every flake_order_every ticks the
-/// pool's alive flakes are stably sorted by ground column and packed into the
-/// lowest slots (docs/performance.md "Spatial order").
+/// pool's alive flakes are stably sorted by ground column, tile by tile, and
+/// packed into the lowest slots (docs/performance.md "Spatial order").
 #pragma once
 
 #include "systems/flake_pool.hpp"
@@ -15,6 +15,11 @@ namespace snow {
 inline constexpr std::uint64_t flake_order_every = 64;
 /// Columns of the ordering grid over the bounds, along x and along z.
 inline constexpr std::uint32_t flake_order_bins = 256;
+/// Columns on a side of the square tiles the order goes by: tile after tile
+/// (rows of tiles along x), and within a tile column after column (rows along
+/// x). A block of slots then covers a compact patch of ground (about 1 m
+/// across in a 16 m scene) rather than a strip the width of the scene.
+inline constexpr std::uint32_t flake_order_tile = 16;
 
 /// A buffer the size of a pool array. Every pool array holds its free value
 /// from slot_end on; a buffer traded away by an ordering keeps that from

@@ -33,13 +33,18 @@ std::map<std::uint32_t, FlakeData> flakes_by_id(const FlakePool& f) {
     return out;
 }
 
-/// Column of the ordering grid holding (x, z) in bounds [-8, 8]².
+/// Place in the order of the column of the ordering grid holding (x, z) in
+/// bounds [-8, 8]²: square tiles of flake_order_tile columns in rows along x,
+/// and the columns of a tile in rows along x.
 std::uint32_t column_of(float x, float z) {
     const auto col = [](float u) {
         return std::min(flake_order_bins - 1,
                         static_cast<std::uint32_t>((u + 8.0f) / 16.0f * flake_order_bins));
     };
-    return col(z) * flake_order_bins + col(x);
+    constexpr std::uint32_t t = flake_order_tile;
+    const std::uint32_t tile_row = col(z) / t, tile_col = col(x) / t;
+    const std::uint32_t tile = tile_row * (flake_order_bins / t) + tile_col;
+    return tile * t * t + (col(z) % t) * t + col(x) % t;
 }
 
 /// Every slot from the alive count on holds what reset() and release() leave.
