@@ -16,6 +16,7 @@
 // later step the box of cells whose inputs changed in the step before or that
 // still send snow. Scattered landings therefore cost per landing, and a pile
 // costs by the area it spreads over, whatever the surface's size (issue #8).
+#include "systems/jobs.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
 #include "systems/systems.hpp"
@@ -57,11 +58,12 @@ struct RedistributeScratch {
     std::vector<TileWork> active;             ///< this step's work
     std::vector<std::uint32_t> next;          ///< tiles with a non-empty box
     std::vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
-    std::vector<std::uint8_t> row_flags;      ///< scan_step: cells of one row that may send
+    std::vector<std::uint8_t> scan_flags;     ///< scan_step: per cell, may send (flag_row)
 
     void fit(std::size_t cells, std::size_t tiles) {
         if (delta.size() < cells) {
             delta.resize(cells, 0);
+            scan_flags.resize(cells);
         }
         if (box.size() < tiles) {
             box.resize(tiles);
@@ -69,11 +71,6 @@ struct RedistributeScratch {
             active.reserve(tiles);
             next.reserve(tiles);
             touched_tiles.reserve(tiles);
-        }
-    }
-    void fit_row(std::size_t nx) {
-        if (row_flags.size() < nx) {
-            row_flags.resize(nx);
         }
     }
 };
@@ -258,6 +255,17 @@ void smooth_step(TileGrid& g, SnowSurface& s) {
     apply_touched(g, s);
 }
 
+/// The interior columns of a box's rows (1 <= x0, x1 + 1 < nx): flag_row's range.
+struct Interior {
+    std::uint32_t x0, x1;
+    bool any;
+};
+Interior interior(const SnowSurface& s, const Box& b) {
+    const std::uint32_t x0 = std::max(b.x0, 1u);
+    const std::uint32_t x1 = std::min(b.x1, s.nx - 2);
+    return {x0, x1, s.nx >= 3 && x0 <= x1};
+}
+
 /// Flags the interior cells x0..x1 of row iz (1 <= x0, x1 + 1 < nx,
 /// 0 < iz < nz - 1) that hold snow and exceed the cap: the only ones
 /// cell_outflow can move. Branch-free over plain arrays, so it vectorises;
@@ -286,38 +294,61 @@ void flag_row(const SnowSurface& s, std::uint32_t iz, std::uint32_t x0, std::uin
     }
 }
 
+/// flag_row over the interior rows of `b` into flags (one byte per cell of
+/// the surface). It only reads the surface, so the rows are split between
+/// two tasks when the box is large; the flags are the same either way.
+void flag_rows(World& w, const SnowSurface& s, const Box& b, std::uint8_t* flags) {
+    const Interior in = interior(s, b);
+    const std::uint32_t z0 = std::max(b.z0, 1u);
+    const std::uint32_t z1 = std::min(b.z1, s.nz - 2);
+    if (!in.any || z0 > z1) {
+        return;
+    }
+    const std::uint32_t rows = z1 - z0 + 1;
+    const std::size_t cells = static_cast<std::size_t>(b.z1 - b.z0 + 1) * (b.x1 - b.x0 + 1);
+    for_tasks(w, 2, cells, [&](std::size_t half) { // the box's cells: the scan's size
+        const std::uint32_t first = z0 + static_cast<std::uint32_t>(half * rows / 2);
+        const std::uint32_t last = z0 + static_cast<std::uint32_t>((half + 1) * rows / 2);
+        for (std::uint32_t iz = first; iz < last; ++iz) {
+            std::uint8_t* row = flags + s.index(0, iz);
+            if (s.compacted.empty()) {
+                flag_row<false>(s, iz, in.x0, in.x1, row);
+            } else {
+                flag_row<true>(s, iz, in.x0, in.x1, row);
+            }
+        }
+    });
+}
+
 /// The first step of a tick when most tiles are marked: one vectorised scan
-/// of the marked rectangle `b` finds the interior cells that can send snow,
-/// cheaper than visiting the tiles' boxes one cell at a time.
-void scan_step(TileGrid& g, SnowSurface& s, const Box& b) {
-    std::uint8_t* flags = g.r.row_flags.data();
+/// of the marked rectangle `b` (flag_rows, on both cores when it is large)
+/// finds the interior cells that can send snow, cheaper than visiting the
+/// tiles' boxes one cell at a time; they are then visited in row order.
+void scan_step(World& w, TileGrid& g, SnowSurface& s, const Box& b) {
+    std::uint8_t* flags = g.r.scan_flags.data();
+    flag_rows(w, s, b, flags);
+    const Interior in = interior(s, b);
     for (std::uint32_t iz = b.z0; iz <= b.z1; ++iz) {
         const bool edge_row = iz == 0 || iz + 1 == s.nz;
-        const std::uint32_t x0 = std::max(b.x0, 1u);
-        const std::uint32_t x1 = std::min(b.x1, s.nx - 2);
-        if (edge_row || s.nx < 3 || x0 > x1) {
+        if (edge_row || !in.any) {
             for (std::uint32_t ix = b.x0; ix <= b.x1; ++ix) {
                 visit(g, ix, iz);
             }
             continue;
         }
-        if (b.x0 < x0) {
+        if (b.x0 < in.x0) {
             visit(g, b.x0, iz); // column 0
         }
-        if (s.compacted.empty()) {
-            flag_row<false>(s, iz, x0, x1, flags);
-        } else {
-            flag_row<true>(s, iz, x0, x1, flags);
-        }
         // Eight flags per word: a row with nothing to move costs a few tests.
-        for (std::uint32_t j = x0; j <= x1; j += 8) {
+        const std::uint8_t* row = flags + s.index(0, iz);
+        for (std::uint32_t j = in.x0; j <= in.x1; j += 8) {
             std::uint64_t word = 0;
-            std::memcpy(&word, flags + j, std::min<std::uint32_t>(8, x1 + 1 - j));
+            std::memcpy(&word, row + j, std::min<std::uint32_t>(8, in.x1 + 1 - j));
             for (; word != 0; word &= word - 1) {
                 visit(g, j + static_cast<std::uint32_t>(std::countr_zero(word)) / 8, iz);
             }
         }
-        if (b.x1 > x1) {
+        if (b.x1 > in.x1) {
             visit(g, b.x1, iz); // column nx - 1
         }
     }
@@ -343,7 +374,6 @@ void redistribute_system(World& w) {
         const std::size_t tiles = static_cast<std::size_t>(s.tiles_x()) * s.tiles_z();
         // once per larger surface
         scratch->fit(s.cell_count(), tiles);
-        scratch->fit_row(s.nx);
         TileGrid g{s, *scratch, s.tiles_x()};
         // First step: the cells whose cap may now fail, the marked ones and
         // their neighbours; per tile, or in one scan when most tiles are marked.
@@ -353,7 +383,7 @@ void redistribute_system(World& w) {
         if (4 * s.dirty_tiles.size() >= tiles && s.closed.empty()) {
             const Box r = Box{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}.grown(s.nx, s.nz);
             s.clear_dirty();
-            scan_step(g, s, r);
+            scan_step(w, g, s, r);
         } else {
             for (const std::uint32_t t : s.dirty_tiles) {
                 g.want_box(s.tile_dirty[t].grown(s.nx, s.nz));
