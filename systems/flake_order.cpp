@@ -75,7 +75,9 @@ void permute(PoolArray<T>& a, SpareArray<T>& spare, const std::vector<std::uint3
 } // namespace
 
 void FlakeOrder::reset(std::uint32_t capacity) {
-    counts.assign(static_cast<std::size_t>(free_key) + 2, 0);
+    for (auto& c : counts) {
+        c.assign(static_cast<std::size_t>(free_key) + 1, 0);
+    }
     keys.assign(capacity, 0);
     source.assign(capacity, 0);
     for (SpareArray<float>* spare : {&zeros[0], &zeros[1], &heights}) {
@@ -96,17 +98,42 @@ void flake_order_system(World& w) {
     const Aabb& bounds = w.resource<SimConfig>().bounds;
     const std::uint32_t end = f.slot_end;
     slot_keys(f.px.data(), f.pz.data(), f.mass_units.data(), end, bounds, o.keys.data());
+    // A stable counting sort in two halves of the slots, one per core when
+    // the pool is large: each counts its keys, the offsets put the first
+    // half's flakes of a key before the second's, and each half places its
+    // own. The same order as one pass in slot order.
     const std::uint32_t* key = o.keys.data();
-    std::fill(o.counts.begin(), o.counts.end(), 0u);
-    for (std::uint32_t s = 0; s < end; ++s) {
-        ++o.counts[key[s] + 1];
+    const std::uint32_t mid = end / 2;
+    const auto half_range = [&](std::size_t half, std::uint32_t& b, std::uint32_t& e) {
+        b = half == 0 ? 0 : mid;
+        e = half == 0 ? mid : end;
+    };
+    for_tasks(w, 2, end, [&](std::size_t half) {
+        std::uint32_t* count = o.counts[half].data();
+        std::fill(count, count + o.counts[half].size(), 0u);
+        std::uint32_t b = 0, e = 0;
+        half_range(half, b, e);
+        for (std::uint32_t s = b; s < e; ++s) {
+            ++count[key[s]];
+        }
+    });
+    std::uint32_t next = 0;
+    for (std::size_t k = 0; k < o.counts[0].size(); ++k) {
+        for (auto& count : o.counts) {
+            const std::uint32_t n = count[k];
+            count[k] = next;
+            next += n;
+        }
     }
-    for (std::size_t c = 1; c < o.counts.size(); ++c) {
-        o.counts[c] += o.counts[c - 1];
-    }
-    for (std::uint32_t s = 0; s < end; ++s) { // in slot order: the sort is stable
-        o.source[o.counts[key[s]]++] = s;
-    }
+    for_tasks(w, 2, end, [&](std::size_t half) {
+        std::uint32_t* place = o.counts[half].data();
+        std::uint32_t* source = o.source.data();
+        std::uint32_t b = 0, e = 0;
+        half_range(half, b, e);
+        for (std::uint32_t s = b; s < e; ++s) { // in slot order: the sort is stable
+            source[place[key[s]]++] = s;
+        }
+    });
     const std::uint32_t alive = f.alive;
     if (f.holds_wind() && o.held.buffer.size() != f.capacity()) {
         o.held.buffer.assign(f.capacity(), held_wind_unset); // once per field

@@ -34,7 +34,9 @@ struct SpareArray {
 /// World resource: the ordering's scratch, sized with the pool, so no tick
 /// allocates. Derived data: neither hashed nor saved.
 struct FlakeOrder {
-    std::vector<std::uint32_t> counts; ///< per column, then the running offsets
+    /// Per key (column or free), for the slots of each half of the pool: the
+    /// count, then where the half's next flake of that key goes.
+    std::vector<std::uint32_t> counts[2];
     std::vector<std::uint32_t> keys;   ///< per slot: its column, or past the last when free
     std::vector<std::uint32_t> source; ///< per new slot: the slot its flake comes from
     /// Where the new order of a pool array is written before the two trade
