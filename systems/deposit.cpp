@@ -31,6 +31,10 @@ struct LandingRecord {
     std::uint32_t slot;
     std::uint32_t surface; ///< dense index in the SnowSurface pool
     std::uint32_t cell;
+    /// The flake's id and mass, read while its block is in cache: applying
+    /// the landings (deposit_end, one thread) would otherwise miss on both.
+    std::uint32_t id;
+    std::uint32_t units;
 };
 
 } // namespace
@@ -88,7 +92,7 @@ bool find_landing(const DepositTick& p, std::uint32_t bin, std::uint32_t slot, f
         if ((on_top || from_above) && top > best) {
             best = top;
             found = true;
-            rec = {slot, si, static_cast<std::uint32_t>(c)};
+            rec = {slot, si, static_cast<std::uint32_t>(c), f.id[slot], f.mass_units[slot]};
         }
     }
     return found;
@@ -237,8 +241,8 @@ void deposit_end(World& w, const DepositTick& d) {
         for (const LandingRecord& r : chunk) {
             SnowSurface& s = surfaces[r.surface];
             const std::size_t dst =
-                roll_target(s, r.cell, {cfg.seed, tick, pool.id[r.slot], random_stream::roll});
-            s.snow[dst] += pool.mass_units[r.slot];
+                roll_target(s, r.cell, {cfg.seed, tick, r.id, random_stream::roll});
+            s.snow[dst] += r.units;
             s.mark_dirty(dst);
             pool.release(r.slot);
             ++counters.landed;
