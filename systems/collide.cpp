@@ -61,7 +61,11 @@ struct CollideScratch {
     /// the deposit bins' tops, collide_share_flags), rebuilt from the grid's
     /// versions and the bins' tops_version.
     std::vector<float> shared_reach;
-    std::vector<float> shared_row_reach; ///< row_tops() of shared_reach
+    std::vector<float> shared_row_reach;    ///< row_tops() of shared_reach
+    std::vector<std::uint32_t> bin_columns; ///< per grid column: its first and last bin column
+    /// Per block of the pool: its prefilter needed the per-flake table last
+    /// tick (flag_block), so it goes straight there; a choice of speed only.
+    std::vector<std::uint8_t> exact_block;
     bool shared_built = false;
     std::uint64_t shared_solids_version = 0;
     std::uint64_t shared_surfaces_version = 0;
@@ -75,6 +79,7 @@ struct Context {
     const float* reach = nullptr;
     const float* row_reach = nullptr;  ///< row_tops() of reach
     bool shared = false;               ///< reach is the shared table
+    bool retry_bound = false;          ///< every block tries its one bound (flag_block) this tick
     const OcclusionMap* map = nullptr; ///< null when no usable map exists
     const float* mesh_block_top = nullptr;
     std::uint32_t blocks_x = 0;
@@ -413,18 +418,32 @@ float block_top(const Context& c, std::size_t b, std::size_t e) {
     return top;
 }
 
+/// Ticks between a block's tries of its one bound after it needed the
+/// per-flake table (flag_block).
+constexpr std::uint64_t bound_retry = 8;
+
 /// Flags the flakes of [b, e) that may need work (needs_tests()). The
 /// block's one bound first: where it picks few (most blocks: the tallest
-/// collider in their rows is below most of their flakes), those few go on
+/// collider near them is below most of their flakes), those few go on
 /// to the exact tests, which clear what the wider bound let through;
-/// otherwise the table's entry per flake. Returns how many are flagged.
+/// otherwise the table's entry per flake. A block that needed the table
+/// goes straight to it on the next ticks (flakes move a few cm a tick) and
+/// tries the bound again every bound_retry ticks. Returns how many are
+/// flagged.
 template <bool with_bodies>
 std::uint32_t flag_block(const Context& c, const PathStarts& st, std::size_t b, std::size_t e,
                          std::uint8_t* flags) {
-    const std::uint32_t few = static_cast<std::uint32_t>(e - b) / 32;
-    const std::uint32_t n =
-        flag_block<with_bodies>(c, BlockTop{block_top(c, b, e)}, st, b, e, flags);
-    return n > few ? flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags) : n;
+    std::uint8_t& exact = c.scratch->exact_block[b / flake_block];
+    if (exact == 0 || c.retry_bound) {
+        const std::uint32_t few = static_cast<std::uint32_t>(e - b) / 32;
+        const std::uint32_t n =
+            flag_block<with_bodies>(c, BlockTop{block_top(c, b, e)}, st, b, e, flags);
+        exact = n > few ? 1 : 0;
+        if (exact == 0) {
+            return n;
+        }
+    }
+    return flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags);
 }
 
 /// needs_tests() by the grid's own table, for one flake the shared table
@@ -520,6 +539,7 @@ void update_scratch(World& w, CollideScratch* s, const FlakePool& pool, const Co
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
+    s->exact_block.resize(pool.capacity() / flake_block + 1);
     // Surfaces (covers too) move in memory only when one is added or removed;
     // the grid's list of them changes order only with the solids and the surfaces.
     if (!s->surfaces_built || s->surfaces_solids_version != versions.solids ||
@@ -617,6 +637,7 @@ CollideTick& collide_begin(World& w) {
         c.map != nullptr ? std::max(std::abs(c.map->shear_x), std::abs(c.map->shear_z)) : 0.0f;
     c.far_y = shear > 0.0f ? 0.9f * std::min(grid.cell_size_x, grid.cell_size_z) / shear
                            : std::numeric_limits<float>::infinity();
+    c.retry_bound = w.resource<SimClock>().tick % bound_retry == 0;
     c.scratch = &scratch;
     return *t;
 }
@@ -633,17 +654,26 @@ void collide_share_flags(CollideTick& t, const DepositBins& bins) {
         // widened by a hundredth of a cell for the rounding of cell_x/cell_z.
         s.shared_reach = g.cell_reach;
         const BinGrid& bg = bins.grid;
+        // The bin columns of each cell column, once (not per cell).
+        s.bin_columns.resize(2 * static_cast<std::size_t>(g.nx));
+        for (std::uint32_t i = 0; i < g.nx; ++i) {
+            s.bin_columns[2 * i] =
+                bg.column(g.x0 + (static_cast<float>(i) - 0.01f) * g.cell_size_x);
+            s.bin_columns[2 * i + 1] =
+                bg.column(g.x0 + (static_cast<float>(i) + 1.01f) * g.cell_size_x);
+        }
         for (std::uint32_t j = 0; j < g.nz; ++j) {
-            const float z0 = g.z0 + (static_cast<float>(j) - 0.01f) * g.cell_size_z;
-            const float z1 = g.z0 + (static_cast<float>(j) + 1.01f) * g.cell_size_z;
+            const std::uint32_t bz0 =
+                bg.row(g.z0 + (static_cast<float>(j) - 0.01f) * g.cell_size_z);
+            const std::uint32_t bz1 =
+                bg.row(g.z0 + (static_cast<float>(j) + 1.01f) * g.cell_size_z);
             for (std::uint32_t i = 0; i < g.nx; ++i) {
-                const float x0 = g.x0 + (static_cast<float>(i) - 0.01f) * g.cell_size_x;
-                const float x1 = g.x0 + (static_cast<float>(i) + 1.01f) * g.cell_size_x;
                 float top = -std::numeric_limits<float>::infinity();
-                for (std::uint32_t bz = bg.row(z0); bz <= bg.row(z1); ++bz) {
-                    for (std::uint32_t bx = bg.column(x0); bx <= bg.column(x1); ++bx) {
-                        top =
-                            std::max(top, bins.bin_top[static_cast<std::size_t>(bz) * bg.nbx + bx]);
+                for (std::uint32_t bz = bz0; bz <= bz1; ++bz) {
+                    const float* row = bins.bin_top.data() + static_cast<std::size_t>(bz) * bg.nbx;
+                    for (std::uint32_t bx = s.bin_columns[2 * i]; bx <= s.bin_columns[2 * i + 1];
+                         ++bx) {
+                        top = std::max(top, row[bx]);
                     }
                 }
                 const std::size_t cell = static_cast<std::size_t>(j) * g.nx + i;
