@@ -336,8 +336,8 @@ struct CellTop {
     }
 };
 
-/// One bound for every path of a block: the highest entry over the rows of
-/// cells the block's paths end in (block_top()). No table read per flake.
+/// One bound for every path of a block: the highest entry over the cells
+/// the block's paths end in (block_top()). No table read per flake.
 struct BlockTop {
     float top;
     [[gnu::always_inline]] float at(float, float, float, float) const { return top; }

@@ -67,7 +67,8 @@ constexpr std::uint64_t sparse_share = 50;
 /// The surface flake `slot` lands on this tick, if any: it reached the snow
 /// top from above (crossed it this tick, sits on it, or is inside the snow
 /// layer). A flake below a surface's bare top never lands on it. The highest
-/// such surface wins; ties go to the first in pool order.
+/// such surface wins (its index and cell go to `rec`); ties go to the first
+/// in pool order.
 bool find_landing(const DepositTick& p, std::uint32_t bin, std::uint32_t slot, float y_start,
                   LandingRecord& rec) {
     const FlakePool& f = *p.pool;
@@ -92,7 +93,8 @@ bool find_landing(const DepositTick& p, std::uint32_t bin, std::uint32_t slot, f
         if ((on_top || from_above) && top > best) {
             best = top;
             found = true;
-            rec = {slot, si, static_cast<std::uint32_t>(c), f.id[slot], f.mass_units[slot]};
+            rec.surface = si;
+            rec.cell = static_cast<std::uint32_t>(c);
         }
     }
     return found;
@@ -128,9 +130,11 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
             return;
         }
         std::uint32_t bin = 0;
-        LandingRecord rec{};
-        if (p.pool->mass_units[slot] != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
+        const std::uint32_t units = p.pool->mass_units[slot];
+        LandingRecord rec{slot, 0, 0, 0, units};
+        if (units != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
             find_landing(p, bin, slot, y_start, rec)) {
+            rec.id = p.pool->id[slot];
             out.push_back(rec);
         }
     };
