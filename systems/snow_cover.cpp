@@ -184,6 +184,7 @@ SnowSurface make_cover_surface(const CoverDef& def) {
     const double talus = std::tan(def.repose_deg * std::numbers::pi / 180.0) * def.cell;
     s.talus_units = std::max<std::int64_t>(1, std::llround(talus / s.unit_height));
     std::fill(s.base_level.begin(), s.base_level.end(), void_level);
+    s.uniform_base = false; // the base follows the geometry (cover_system)
     s.closed.assign(s.cell_count(), closed_all);
     s.level_bound = void_level;
     return s;

@@ -67,6 +67,7 @@ SnowSurface make_surface(const SurfaceDef& def) {
         }
     }
     s.level_bound = *std::max_element(s.base_level.begin(), s.base_level.end());
+    s.uniform_base = s.level_bound == *std::min_element(s.base_level.begin(), s.base_level.end());
     // Every tile is listed at most once: no tick allocates for marking.
     s.tile_dirty.assign(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), CellBox{});
     s.dirty_tiles.reserve(s.tile_dirty.size());

@@ -91,7 +91,10 @@ struct SnowSurface {
     std::uint32_t nx = 0, nz = 0;
     float unit_height = 0.0f;             ///< metres of snow one unit adds to a cell
     std::vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
-    std::vector<std::uint32_t> snow;      ///< settled units per cell (row-major, x fastest)
+    /// Every base_level is the same (a level rectangle), so levels differ by
+    /// their snow alone; false: they may differ (a slope, a cover's base).
+    bool uniform_base = false;
+    std::vector<std::uint32_t> snow; ///< settled units per cell (row-major, x fastest)
     /// Per cell, the levels by which packed snow stands lower than its units
     /// would at fresh density (docs/cover_and_bodies.md "Compaction"): its
     /// mean density is fresh_snow_density · snow / depth_levels. Empty until a
