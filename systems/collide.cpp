@@ -46,6 +46,7 @@ constexpr std::uint32_t block_shift = 3;
 struct CollideScratch {
     std::vector<std::uint32_t> slots;
     std::vector<Removal> reasons;
+    std::vector<std::uint32_t> units;  ///< per removal: the flake's mass, read in its block
     std::vector<std::uint32_t> counts; ///< removals listed per chunk so far
     std::vector<const SnowSurface*> surfaces;
     std::vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
@@ -527,6 +528,13 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
             reasons[n++] = Removal::bounds;
         }
     }
+    // The removed flakes leave the pool while their slots are in cache;
+    // collide_end books them and frees the slots in slot order.
+    std::uint32_t* units = c.scratch->units.data() + chunk * flake_grain;
+    for (std::uint32_t k = first; k < n; ++k) {
+        units[k] = f.mass_units[slots[k]];
+        c.pool->park(slots[k]);
+    }
     c.scratch->counts[chunk] = n;
     return {slots + first, n - first};
 }
@@ -538,6 +546,7 @@ void update_scratch(World& w, CollideScratch* s, const FlakePool& pool, const Co
     // Sizes change only with the pool capacity: no steady-tick allocation.
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
+    s->units.resize(pool.capacity());
     s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
     s->exact_block.resize(pool.capacity() / flake_block + 1);
     // Surfaces (covers too) move in memory only when one is added or removed;
@@ -701,7 +710,7 @@ void collide_end(World& w, const CollideTick& t) {
         const std::size_t base = chunk * flake_grain;
         for (std::uint32_t k = 0; k < scratch.counts[chunk]; ++k) {
             const std::uint32_t slot = scratch.slots[base + k];
-            const std::uint64_t units = pool.mass_units[slot];
+            const std::uint64_t units = scratch.units[base + k];
             switch (scratch.reasons[base + k]) {
             case Removal::bounds:
                 ledger.removed_bounds += units;
@@ -713,7 +722,7 @@ void collide_end(World& w, const CollideTick& t) {
                 ledger.removed_bare += units;
                 break;
             }
-            pool.release(slot);
+            pool.free_parked(slot); // parked by collide_block
         }
     }
 }

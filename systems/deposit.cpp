@@ -53,7 +53,7 @@ struct DepositTick {
     /// then shares collide's prefilter (every flake it lists costs a second
     /// test, which pays only while they are few).
     bool sparse = false;
-    const FlakePool* pool = nullptr;
+    FlakePool* pool = nullptr; ///< a block parks the flakes it lands (each its own slots)
     const SnowSurface* surfaces = nullptr;
 };
 
@@ -136,6 +136,7 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
             find_landing(p, bin, slot, y_start, rec)) {
             rec.id = p.pool->id[slot];
             out.push_back(rec);
+            p.pool->park(slot); // in cache now; deposit_end frees it in slot order
         }
     };
     std::uint32_t& passed = p.passed[chunk];
@@ -248,7 +249,7 @@ void deposit_end(World& w, const DepositTick& d) {
                 roll_target(s, r.cell, {cfg.seed, tick, r.id, random_stream::roll});
             s.snow[dst] += r.units;
             s.mark_dirty(dst);
-            pool.release(r.slot);
+            pool.free_parked(r.slot); // parked by deposit_block
             ++counters.landed;
             counters.rolled += dst != r.cell ? 1 : 0;
         }

@@ -51,14 +51,6 @@ bool FlakePool::acquire(std::uint32_t& slot) {
     return true;
 }
 
-void FlakePool::release(std::uint32_t slot) {
-    mass_units[slot] = 0;
-    vx[slot] = vy[slot] = vz[slot] = 0.0f;
-    py[slot] = parked_y;
-    free_stack.push_back(slot); // capacity was reserved in reset(): no allocation
-    --alive;
-}
-
 std::uint64_t FlakePool::airborne_units() const {
     std::uint64_t sum = 0;
     for (std::uint32_t i = 0; i < slot_end; ++i) {

@@ -85,7 +85,24 @@ struct FlakePool {
     /// id (and an unset held wind); returns false when full.
     [[nodiscard]] bool acquire(std::uint32_t& slot);
     /// Frees a slot; its mass must already be accounted for by the caller.
-    void release(std::uint32_t slot);
+    void release(std::uint32_t slot) {
+        park(slot);
+        free_parked(slot);
+    }
+    /// The slot's half of release(): its fields as a free slot holds them. A
+    /// pass's block parks the flakes it removes while their slots are in
+    /// cache; the pass's end frees them in slot order.
+    void park(std::uint32_t slot) {
+        mass_units[slot] = 0;
+        vx[slot] = vy[slot] = vz[slot] = 0.0f;
+        py[slot] = parked_y;
+    }
+    /// The pool's half of release() for a parked slot: onto the free stack
+    /// (whose order is state: callers go in slot order), one fewer alive.
+    void free_parked(std::uint32_t slot) {
+        free_stack.push_back(slot); // capacity was reserved in reset(): no allocation
+        --alive;
+    }
     /// Sum of mass units of alive flakes (airborne snow).
     [[nodiscard]] std::uint64_t airborne_units() const;
 };
