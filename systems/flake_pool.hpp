@@ -11,29 +11,56 @@
 #include <new>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace snow {
 
 /// Allocator for the pool's arrays: storage starts on a cache line, so the
 /// SIMD loops of the per-flake systems load whole lines and chunks of
-/// flake_grain slots never share a line with their neighbours.
+/// flake_grain slots never share a line with their neighbours. An array of
+/// 2 MiB or more is laid on whole 2 MiB pages and offered to the kernel as
+/// huge pages (Linux; a hint): a pass streams a dozen such arrays at once,
+/// and on 4 KiB pages every 4 KiB of each costs a TLB miss (1M-flake yard,
+/// per-system timer: the flake pass 2-5 % faster).
 template <typename T>
 struct CacheAligned {
     using value_type = T;
     static constexpr std::size_t alignment = 64;
+    static constexpr std::size_t huge_page = std::size_t{2} << 20;
 
     CacheAligned() = default;
     template <typename U>
     CacheAligned(const CacheAligned<U>&) noexcept {}
 
     [[nodiscard]] T* allocate(std::size_t n) {
-        return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{alignment}));
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes < huge_page) {
+            return static_cast<T*>(::operator new (bytes, std::align_val_t{alignment}));
+        }
+        void* p = ::operator new (whole_pages(bytes), std::align_val_t{huge_page});
+#if defined(__linux__)
+        (void)madvise(p, whole_pages(bytes), MADV_HUGEPAGE); // refused: 4 KiB pages, same data
+#endif
+        return static_cast<T*>(p);
     }
     void deallocate(T* p, std::size_t n) noexcept {
-        ::operator delete (p, n * sizeof(T), std::align_val_t{alignment});
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes < huge_page) {
+            ::operator delete (p, bytes, std::align_val_t{alignment});
+        } else {
+            ::operator delete (p, whole_pages(bytes), std::align_val_t{huge_page});
+        }
     }
     template <typename U>
     bool operator==(const CacheAligned<U>&) const noexcept {
         return true;
+    }
+
+  private:
+    static std::size_t whole_pages(std::size_t bytes) {
+        return (bytes + huge_page - 1) / huge_page * huge_page;
     }
 };
 
