@@ -4,6 +4,29 @@
 
 namespace snow {
 
+namespace {
+
+/// How long a thread that ran out of work polls (yielding its core) for the
+/// next job or the last chunk before it sleeps: a sleeping thread takes tens
+/// of µs to wake (a futex wake, on a VM an interrupt), about a chunk's work,
+/// and a tick hands out work once or twice.
+constexpr auto poll_for = std::chrono::microseconds(100);
+
+/// Polls done() until it holds or poll_for has passed; returns done().
+template <typename Done>
+bool poll(const Done& done) {
+    const auto until = std::chrono::steady_clock::now() + poll_for;
+    while (!done()) {
+        if (std::chrono::steady_clock::now() >= until) {
+            return false;
+        }
+        std::this_thread::yield();
+    }
+    return true;
+}
+
+} // namespace
+
 JobPool::JobPool(unsigned threads) {
     const unsigned extra = threads > 1 ? threads - 1 : 0;
     workers_.reserve(extra);
@@ -37,8 +60,7 @@ void JobPool::drain() {
     }
     if (done_here > 0) {
         std::lock_guard lock(mutex_);
-        finished_ += done_here;
-        if (finished_ == chunks_) {
+        if (finished_.fetch_add(done_here, std::memory_order_acq_rel) + done_here == chunks_) {
             done_.notify_all();
         }
     }
@@ -47,6 +69,7 @@ void JobPool::drain() {
 void JobPool::worker_loop() {
     std::uint64_t seen = 0;
     for (;;) {
+        (void)poll([&] { return epoch_.load(std::memory_order_acquire) != seen; });
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stop_ || epoch_ != seen; });
@@ -82,6 +105,7 @@ void JobPool::parallel_for(std::size_t n, std::size_t grain, const ChunkFn& fn) 
     }
     wake_.notify_all();
     drain();
+    (void)poll([&] { return finished_.load(std::memory_order_acquire) == chunks; });
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return finished_ == chunks_; });
     job_ = nullptr;

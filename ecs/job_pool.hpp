@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -48,8 +49,8 @@ class JobPool {
     std::size_t grain_ = 1;
     std::size_t chunks_ = 0;
     std::atomic<std::size_t> next_{0};
-    std::size_t finished_ = 0;
-    std::uint64_t epoch_ = 0;
+    std::atomic<std::size_t> finished_{0};
+    std::atomic<std::uint64_t> epoch_{0};
     bool stop_ = false;
 };
 
