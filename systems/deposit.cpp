@@ -35,6 +35,10 @@ struct LandingRecord {
     /// the landings (deposit_end, one thread) would otherwise miss on both.
     std::uint32_t id;
     std::uint32_t units;
+    /// Where it rolls (roll_target) by the levels as they stood when the
+    /// pass began: deposit_end keeps it unless an earlier landing of the
+    /// tick changed a cell the rule reads.
+    std::uint32_t target;
 };
 
 } // namespace
@@ -55,6 +59,12 @@ struct DepositTick {
     bool sparse = false;
     FlakePool* pool = nullptr; ///< a block parks the flakes it lands (each its own slots)
     const SnowSurface* surfaces = nullptr;
+    std::uint64_t seed = 0;
+    std::uint64_t tick = 0;
+    /// deposit_end's: per surface, per dirty tile, the last application
+    /// (`applied`) that added snow to one of its cells.
+    mutable std::vector<std::vector<std::uint64_t>> touched;
+    mutable std::uint64_t applied = 0;
 };
 
 namespace {
@@ -63,6 +73,26 @@ namespace {
 /// passes the bin test and sharing saves 5–7 % of a tick; in the village
 /// about 1 in 7 does and sharing cost 20 % (docs/performance.md).
 constexpr std::uint64_t sparse_share = 50;
+
+/// [ZCL §IV] deposition rules for snow arriving on cell c: no lower
+/// neighbour -> stays (rule 1); otherwise one of the n lower neighbours with
+/// probability 1/n each, which is 25% each when all four are equal and lower
+/// (rule 2) and 1/n in general (rule 3). Returns the cell that receives it.
+std::size_t roll_target(const SnowSurface& s, std::size_t c, const RngKey& key) {
+    const auto ix = static_cast<std::uint32_t>(c % s.nx);
+    const auto iz = static_cast<std::uint32_t>(c / s.nx);
+    std::size_t nb[4];
+    const std::uint32_t n = s.neighbours(ix, iz, nb);
+    const std::int64_t h = s.level(c);
+    std::size_t lower[4];
+    std::uint32_t n_lower = 0;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (s.level(nb[k]) < h) {
+            lower[n_lower++] = nb[k];
+        }
+    }
+    return n_lower == 0 ? c : lower[rng_below(key, 0, n_lower)];
+}
 
 /// The surface flake `slot` lands on this tick, if any: it reached the snow
 /// top from above (crossed it this tick, sits on it, or is inside the snow
@@ -131,10 +161,12 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
         }
         std::uint32_t bin = 0;
         const std::uint32_t units = p.pool->mass_units[slot];
-        LandingRecord rec{slot, 0, 0, 0, units};
+        LandingRecord rec{slot, 0, 0, 0, units, 0};
         if (units != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
             find_landing(p, bin, slot, y_start, rec)) {
             rec.id = p.pool->id[slot];
+            rec.target = static_cast<std::uint32_t>(roll_target(
+                p.surfaces[rec.surface], rec.cell, {p.seed, p.tick, rec.id, random_stream::roll}));
             out.push_back(rec);
             p.pool->park(slot); // in cache now; deposit_end frees it in slot order
         }
@@ -177,24 +209,23 @@ const DepositBins& deposit_bins(const DepositTick& t) {
 
 namespace {
 
-/// [ZCL §IV] deposition rules for snow arriving on cell c: no lower
-/// neighbour -> stays (rule 1); otherwise one of the n lower neighbours with
-/// probability 1/n each, which is 25% each when all four are equal and lower
-/// (rule 2) and 1/n in general (rule 3). Returns the cell that receives it.
-std::size_t roll_target(const SnowSurface& s, std::size_t c, const RngKey& key) {
+/// Whether a landing applied since stamp `first` added snow to a tile that
+/// holds cell c or one of its neighbours (the cells roll_target reads), so
+/// the target the pass found may be stale. Tiles, not cells: the stamps stay
+/// in cache; a stale-looking target is only recomputed.
+bool changed_near(const SnowSurface& s, const std::vector<std::uint64_t>& touched,
+                  std::uint64_t first, std::size_t c) {
     const auto ix = static_cast<std::uint32_t>(c % s.nx);
     const auto iz = static_cast<std::uint32_t>(c / s.nx);
-    std::size_t nb[4];
-    const std::uint32_t n = s.neighbours(ix, iz, nb);
-    const std::int64_t h = s.level(c);
-    std::size_t lower[4];
-    std::uint32_t n_lower = 0;
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (s.level(nb[k]) < h) {
-            lower[n_lower++] = nb[k];
+    const std::uint32_t x0 = ix > 0 ? ix - 1 : 0, x1 = std::min(ix + 1, s.nx - 1);
+    const std::uint32_t z0 = iz > 0 ? iz - 1 : 0, z1 = std::min(iz + 1, s.nz - 1);
+    for (const std::uint32_t t :
+         {s.tile_of(x0, iz), s.tile_of(x1, iz), s.tile_of(ix, z0), s.tile_of(ix, z1)}) {
+        if (touched[t] >= first) {
+            return true;
         }
     }
-    return n_lower == 0 ? c : lower[rng_below(key, 0, n_lower)];
+    return false;
 }
 
 } // namespace
@@ -232,23 +263,34 @@ DepositTick* deposit_begin(World& w) {
     d->scanned = pool.slot_end;
     d->pool = &pool;
     d->surfaces = surfaces.data();
+    d->seed = w.resource<SimConfig>().seed;
+    d->tick = w.resource<SimClock>().tick;
     return d;
 }
 
 void deposit_end(World& w, const DepositTick& d) {
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& pool = w.resource<FlakePool>();
-    const auto& cfg = w.resource<SimConfig>();
-    const std::uint64_t tick = w.resource<SimClock>().tick;
     auto& counters = w.resource<SimCounters>();
+    d.touched.resize(surfaces.size());
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const SnowSurface& s = surfaces[i];
+        d.touched[i].resize(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), d.applied);
+    }
+    const std::uint64_t first = ++d.applied; // every stamp from before is older
     // Apply in chunk order = slot order: later landings see earlier ones' snow.
     for (const auto& chunk : d.chunks) {
         for (const LandingRecord& r : chunk) {
             SnowSurface& s = surfaces[r.surface];
+            std::vector<std::uint64_t>& touched = d.touched[r.surface];
             const std::size_t dst =
-                roll_target(s, r.cell, {cfg.seed, tick, r.id, random_stream::roll});
+                changed_near(s, touched, first, r.cell)
+                    ? roll_target(s, r.cell, {d.seed, d.tick, r.id, random_stream::roll})
+                    : r.target;
             s.snow[dst] += r.units;
             s.mark_dirty(dst);
+            touched[s.tile_of(static_cast<std::uint32_t>(dst % s.nx),
+                              static_cast<std::uint32_t>(dst / s.nx))] = d.applied++;
             pool.free_parked(r.slot); // parked by deposit_block
             ++counters.landed;
             counters.rolled += dst != r.cell ? 1 : 0;

@@ -306,6 +306,25 @@ TEST(Deposit, RollsAtTheGridEdgeUseOnlyExistingNeighbours) {
     EXPECT_LT(chi_square(hits, nbrs, roll_trials), chi_999[1]);
 }
 
+TEST(Deposit, LaterLandingsOfATickSeeEarlierOnesSnow) {
+    // Landings apply in slot order, each on the snow the ones before it left
+    // (the pass finds roll targets by the levels it began with and
+    // deposit_end recomputes those a landing of the tick made stale).
+    Simulation sim(small_config());
+    const Entity e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
+    const SnowSurface& s = sim.surface(e);
+    for (int k = 0; k < 3; ++k) {
+        place_flake(sim, centre(s, 20, 20), {0.0f, 0.0f, 0.0f}, 30);
+    }
+    sim.tick();
+    // The first finds its cell level with its neighbours and stays (rule 1);
+    // the next two find it higher and roll to a neighbour (rule 2).
+    EXPECT_EQ(sim.counters().landed, 3u);
+    EXPECT_EQ(sim.counters().rolled, 2u);
+    EXPECT_EQ(s.snow[s.index(20, 20)], 30u);
+    EXPECT_EQ(s.settled_units(), 90u);
+}
+
 TEST(Deposit, ConcentratedLandingStaysBounded) {
     // [WF §4, §6]: heavy flakes hitting one spot made the field blow up.
     // 100 000 units on one cell in four ticks, through the whole tick.
