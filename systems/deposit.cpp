@@ -3,8 +3,11 @@
 // one cell by the deposition rules of [ZCL §IV].
 //
 // Detection runs in parallel over fixed chunks of flake slots, block by block
-// (flake_stages.hpp), and only writes landing records; the records are applied in slot order
-// afterwards, so the result is the same for any thread count.
+// (flake_stages.hpp): it reads the surfaces, writes landing records (with the
+// roll target by the levels the tick began with) and parks each landed
+// flake's own slot. The records are applied in slot order afterwards, each on
+// the snow the ones before it left, so the result is the same for any thread
+// count.
 #include "ecs/rng.hpp"
 #include "systems/deposit_bins.hpp"
 #include "systems/flake_pool.hpp"

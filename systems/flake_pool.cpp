@@ -3,8 +3,43 @@
 #include "systems/held_wind.hpp"
 
 #include <algorithm>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace snow {
+
+namespace {
+
+constexpr std::size_t cache_line = 64;
+constexpr std::size_t huge_page = std::size_t{2} << 20;
+
+std::size_t whole_pages(std::size_t bytes) {
+    return (bytes + huge_page - 1) / huge_page * huge_page;
+}
+
+} // namespace
+
+void* allocate_pool_array(std::size_t bytes) {
+    if (bytes < huge_page) {
+        return ::operator new (bytes, std::align_val_t{cache_line});
+    }
+    void* p = ::operator new (whole_pages(bytes), std::align_val_t{huge_page});
+#if defined(__linux__)
+    (void)madvise(p, whole_pages(bytes), MADV_HUGEPAGE); // refused: 4 KiB pages, same data
+#endif
+    return p;
+}
+
+void free_pool_array(void* p, std::size_t bytes) noexcept {
+    if (bytes < huge_page) {
+        ::operator delete (p, bytes, std::align_val_t{cache_line});
+    } else {
+        ::operator delete (p, whole_pages(bytes), std::align_val_t{huge_page});
+    }
+}
 
 void FlakePool::reset(std::uint32_t capacity) {
     for (auto* v : {&px, &pz, &vx, &vy, &vz, &k_over_m, &size}) {

@@ -8,14 +8,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <new>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace snow {
+
+/// Storage for CacheAligned: `bytes` on a cache line, or on whole 2 MiB
+/// pages offered to the kernel as huge pages from 2 MiB on (flake_pool.cpp).
+[[nodiscard]] void* allocate_pool_array(std::size_t bytes);
+void free_pool_array(void* p, std::size_t bytes) noexcept;
 
 /// Allocator for the pool's arrays: storage starts on a cache line, so the
 /// SIMD loops of the per-flake systems load whole lines and chunks of
@@ -27,40 +27,18 @@ namespace snow {
 template <typename T>
 struct CacheAligned {
     using value_type = T;
-    static constexpr std::size_t alignment = 64;
-    static constexpr std::size_t huge_page = std::size_t{2} << 20;
 
     CacheAligned() = default;
     template <typename U>
     CacheAligned(const CacheAligned<U>&) noexcept {}
 
     [[nodiscard]] T* allocate(std::size_t n) {
-        const std::size_t bytes = n * sizeof(T);
-        if (bytes < huge_page) {
-            return static_cast<T*>(::operator new (bytes, std::align_val_t{alignment}));
-        }
-        void* p = ::operator new (whole_pages(bytes), std::align_val_t{huge_page});
-#if defined(__linux__)
-        (void)madvise(p, whole_pages(bytes), MADV_HUGEPAGE); // refused: 4 KiB pages, same data
-#endif
-        return static_cast<T*>(p);
+        return static_cast<T*>(allocate_pool_array(n * sizeof(T)));
     }
-    void deallocate(T* p, std::size_t n) noexcept {
-        const std::size_t bytes = n * sizeof(T);
-        if (bytes < huge_page) {
-            ::operator delete (p, bytes, std::align_val_t{alignment});
-        } else {
-            ::operator delete (p, whole_pages(bytes), std::align_val_t{huge_page});
-        }
-    }
+    void deallocate(T* p, std::size_t n) noexcept { free_pool_array(p, n * sizeof(T)); }
     template <typename U>
     bool operator==(const CacheAligned<U>&) const noexcept {
         return true;
-    }
-
-  private:
-    static std::size_t whole_pages(std::size_t bytes) {
-        return (bytes + huge_page - 1) / huge_page * huge_page;
     }
 };
 
