@@ -1,6 +1,7 @@
 #include "ecs/job_pool.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace snow {
 
@@ -12,17 +13,14 @@ namespace {
 /// and a tick hands out work once or twice.
 constexpr auto poll_for = std::chrono::microseconds(100);
 
-/// Polls done() until it holds or poll_for has passed; returns done().
+/// Polls done() until it holds or poll_for has passed (the caller then
+/// waits on its condition variable, which sees the same state).
 template <typename Done>
-bool poll(const Done& done) {
+void poll(const Done& done) {
     const auto until = std::chrono::steady_clock::now() + poll_for;
-    while (!done()) {
-        if (std::chrono::steady_clock::now() >= until) {
-            return false;
-        }
+    while (!done() && std::chrono::steady_clock::now() < until) {
         std::this_thread::yield();
     }
-    return true;
 }
 
 } // namespace
@@ -69,7 +67,7 @@ void JobPool::drain() {
 void JobPool::worker_loop() {
     std::uint64_t seen = 0;
     for (;;) {
-        (void)poll([&] { return epoch_.load(std::memory_order_acquire) != seen; });
+        poll([&] { return epoch_.load(std::memory_order_acquire) != seen; });
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stop_ || epoch_ != seen; });
@@ -105,7 +103,7 @@ void JobPool::parallel_for(std::size_t n, std::size_t grain, const ChunkFn& fn) 
     }
     wake_.notify_all();
     drain();
-    (void)poll([&] { return finished_.load(std::memory_order_acquire) == chunks; });
+    poll([&] { return finished_.load(std::memory_order_acquire) == chunks; });
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return finished_ == chunks_; });
     job_ = nullptr;

@@ -264,8 +264,9 @@ Interior interior(const SnowSurface& s, const Box& b) {
     return {x0, x1, s.nx >= 3 && x0 <= x1};
 }
 
-/// The levels of a prefiltered() surface's cells read straight from its
-/// arrays: `Packed`, it holds compacted snow, which lowers the levels;
+/// The levels of a surface's cells read straight from its arrays, for the
+/// prefilter of a prefiltered() surface and for prefetching on any:
+/// `Packed`, it holds compacted snow, which lowers the levels;
 /// `Uniform`, every base level is the same (SnowSurface::uniform_base), so
 /// the differences the prefilter takes are those of the snow alone and the
 /// base array (twice the snow's bytes) is not read.
@@ -347,8 +348,7 @@ void flag_rows(World& w, const SnowSurface& s, const Box& b, std::uint8_t* flags
     // scanned cell reads five cells' levels, about two slots' work (the 1M
     // yard's scan of ~200k cells runs faster on two cores: BM_SimTick 1M/2t
     // 2 - 3 % less time per tick; small boxes stay on one).
-    const std::size_t cells = static_cast<std::size_t>(b.z1 - b.z0 + 1) * (b.x1 - b.x0 + 1);
-    for_tasks(w, 2, 2 * cells, [&](std::size_t half) {
+    for_tasks(w, 2, 2 * b.cells(), [&](std::size_t half) {
         const std::uint32_t first = z0 + static_cast<std::uint32_t>(half * rows / 2);
         const std::uint32_t last = z0 + static_cast<std::uint32_t>((half + 1) * rows / 2);
         with_levels(s, [&](const auto& lv) {
@@ -449,8 +449,7 @@ void scan_step(World& w, TileGrid& g, SnowSurface& s, const Box& b) {
 std::size_t marked_area(const SnowSurface& s) {
     std::size_t area = 0;
     for (const std::uint32_t t : s.dirty_tiles) {
-        const Box b = s.tile_dirty[t].grown(s.nx, s.nz);
-        area += static_cast<std::size_t>(b.x1 - b.x0 + 1) * (b.z1 - b.z0 + 1);
+        area += s.tile_dirty[t].grown(s.nx, s.nz).cells();
     }
     return area;
 }
@@ -482,8 +481,7 @@ void redistribute_system(World& w) {
         // prefilter holds and the boxes cover much of it (a scanned cell
         // costs a few times less than one of a box).
         const Box r = Box{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}.grown(s.nx, s.nz);
-        const std::size_t rect = static_cast<std::size_t>(r.x1 - r.x0 + 1) * (r.z1 - r.z0 + 1);
-        if (prefiltered(s) && 4 * marked_area(s) >= rect) {
+        if (prefiltered(s) && 4 * marked_area(s) >= r.cells()) {
             s.clear_dirty();
             scan_step(w, g, s, r);
         } else {

@@ -43,6 +43,10 @@ inline constexpr std::uint32_t dirty_tile_shift = 3;
 struct CellBox {
     std::uint32_t x0 = 1, z0 = 1, x1 = 0, z1 = 0;
     [[nodiscard]] bool empty() const { return x0 > x1 || z0 > z1; }
+    /// How many cells the box holds (it must not be empty).
+    [[nodiscard]] std::size_t cells() const {
+        return static_cast<std::size_t>(x1 - x0 + 1) * (z1 - z0 + 1);
+    }
     void include(std::uint32_t x, std::uint32_t z) {
         if (empty()) {
             *this = {x, z, x, z};
