@@ -141,37 +141,50 @@ bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uin
     return next < removed.size() && removed[next] == slot;
 }
 
+/// Starts loading what find_landing reads for a flake at (x, z) in `bin`:
+/// the cell of each surface of the bin under it. The few flakes of a block
+/// that may land lie scattered over cells its other flakes never touch, so
+/// each would wait for its cells in turn; loaded together, the waits overlap.
+void prefetch_landing(const DepositTick& p, std::uint32_t bin, float x, float z) {
+    const DepositBins& d = p.bins;
+    for (std::uint32_t k = d.bin_start[bin]; k < d.bin_start[bin + 1]; ++k) {
+        const SnowSurface& s = p.surfaces[d.bin_items[k]];
+        std::uint32_t ix = 0, iz = 0;
+        if (s.cell_at(x, z, ix, iz)) {
+            const std::size_t c = s.index(ix, iz);
+            __builtin_prefetch(s.base_level.data() + c);
+            __builtin_prefetch(s.snow.data() + c);
+            if (!s.compacted.empty()) {
+                __builtin_prefetch(s.compacted.data() + c);
+            }
+        }
+    }
+}
+
 } // namespace
 
-/// Detection over slots [b, e). The bins' branch-free pass over positions
-/// flags flakes low enough to land on some surface under them (or, with
-/// `shared`, the same test on the slots the pass's shared prefilter listed:
-/// every flake it would flag is among them); only those get the exact test,
-/// against the start of their path this tick.
-void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st, std::size_t b,
-                   std::size_t e, std::span<const std::uint32_t> removed,
-                   const BlockCandidates* shared) {
+/// Detection over slots [b, e), first half. The bins' branch-free pass over
+/// positions flags flakes low enough to land on some surface under them (or,
+/// with `shared`, the same test on the slots the pass's shared prefilter
+/// listed: every flake it would flag is among them); those that may land are
+/// listed, and what their exact test will read starts loading.
+void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st, std::size_t b,
+                  std::size_t e, std::span<const std::uint32_t> removed,
+                  const BlockCandidates* shared, DepositCandidates& out) {
     const DepositBins& d = p.bins;
-    std::vector<LandingRecord>& out = p.chunks[chunk];
     const float* px = p.pool->px.data();
     const float* py = p.pool->py.data();
     const float* pz = p.pool->pz.data();
+    out.count = 0;
     std::size_t next_removed = 0;
-    const auto consider = [&](std::uint32_t slot) {
-        const float y_start = st.y[slot - st.base];
-        if (!d.may_land(py[slot], y_start) || skipped(removed, next_removed, slot)) {
-            return;
-        }
+    const auto list = [&](std::uint32_t slot) {
         std::uint32_t bin = 0;
-        const std::uint32_t units = p.pool->mass_units[slot];
-        LandingRecord rec{slot, 0, 0, 0, units, 0};
-        if (units != 0 && d.grid.bin_of(px[slot], pz[slot], bin) &&
-            find_landing(p, bin, slot, y_start, rec)) {
-            rec.id = p.pool->id[slot];
-            rec.target = static_cast<std::uint32_t>(roll_target(
-                p.surfaces[rec.surface], rec.cell, {p.seed, p.tick, rec.id, random_stream::roll}));
-            out.push_back(rec);
-            p.pool->park(slot); // in cache now; deposit_end frees it in slot order
+        if (d.may_land(py[slot], st.y[slot - st.base]) && p.pool->mass_units[slot] != 0 &&
+            d.grid.bin_of(px[slot], pz[slot], bin) && !skipped(removed, next_removed, slot)) {
+            prefetch_landing(p, bin, px[slot], pz[slot]);
+            __builtin_prefetch(p.pool->id.data() + slot);
+            out.slots[out.count] = slot;
+            out.bins[out.count++] = bin;
         }
     };
     std::uint32_t& passed = p.passed[chunk];
@@ -182,7 +195,7 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
             flag_deposit_candidates(d, px + slot, py + slot, pz + slot, 1, &flag);
             if (flag != 0) {
                 ++passed;
-                consider(slot);
+                list(slot);
             }
         }
         return;
@@ -196,7 +209,26 @@ void deposit_block(const DepositTick& p, std::size_t chunk, const PathStarts& st
         std::memcpy(&word, flag + j, sizeof word);
         for (; word != 0; word &= word - 1) {
             ++passed;
-            consider(static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8));
+            list(static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8));
+        }
+    }
+}
+
+/// Second half: the exact test of each listed flake against the start of
+/// its path this tick; a landing is recorded (with its roll target) and its
+/// flake parked.
+void deposit_land(const DepositTick& p, std::size_t chunk, const PathStarts& st,
+                  const DepositCandidates& listed) {
+    std::vector<LandingRecord>& out = p.chunks[chunk];
+    for (std::size_t k = 0; k < listed.count; ++k) {
+        const std::uint32_t slot = listed.slots[k];
+        LandingRecord rec{slot, 0, 0, 0, p.pool->mass_units[slot], 0};
+        if (find_landing(p, listed.bins[k], slot, st.y[slot - st.base], rec)) {
+            rec.id = p.pool->id[slot];
+            rec.target = static_cast<std::uint32_t>(roll_target(
+                p.surfaces[rec.surface], rec.cell, {p.seed, p.tick, rec.id, random_stream::roll}));
+            out.push_back(rec);
+            p.pool->park(slot); // deposit_end frees it in slot order
         }
     }
 }
@@ -294,7 +326,7 @@ void deposit_end(World& w, const DepositTick& d) {
             s.mark_dirty(dst);
             touched[s.tile_of(static_cast<std::uint32_t>(dst % s.nx),
                               static_cast<std::uint32_t>(dst / s.nx))] = d.applied++;
-            pool.free_parked(r.slot); // parked by deposit_block
+            pool.free_parked(r.slot); // parked by deposit_land
             ++counters.landed;
             counters.rolled += dst != r.cell ? 1 : 0;
         }

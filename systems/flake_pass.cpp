@@ -8,7 +8,11 @@
 // (FlakePass.SameAsStagesOneAtATime) and for any thread count. While few
 // flakes are low enough to land, collide's prefilter, its reach raised to
 // the deposit bins' tops, flags for both stages, so deposit reads the listed
-// slots instead of the whole block.
+// slots instead of the whole block. Deposit's exact tests of a block wait
+// until the next block has been integrated and collided: the surface cells
+// under its few low flakes are scattered and rarely in cache, and their
+// loads, started when the block was listed, have arrived by then (1M-flake
+// yard: the pass 5 % faster on one thread).
 #include "systems/flake_pool.hpp"
 #include "systems/flake_stages.hpp"
 #include "systems/jobs.hpp"
@@ -60,15 +64,41 @@ void flake_pass_system(World& w) {
     if (share) {
         collide_share_flags(co, deposit_bins(*de));
     }
-    for_blocks(w, [&](std::size_t chunk, std::size_t b, std::size_t e) {
-        alignas(64) float x[flake_block], y[flake_block], z[flake_block];
-        const PathStarts starts{x, y, z, b};
-        integrate_block(in, chunk, starts, b, e);
-        BlockCandidates flagged;
-        const auto removed = collide_block(co, chunk, starts, b, e, share ? &flagged : nullptr);
-        if (de != nullptr) {
-            deposit_block(*de, chunk, starts, b, e, removed, share ? &flagged : nullptr);
+    const std::size_t n = w.resource<FlakePool>().slot_end;
+    const auto chunk_of_blocks = [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+        // Two blocks in flight: a block's landings are tested after the next
+        // block's integrate and collide (deposit_list, deposit_land).
+        struct Block {
+            alignas(64) float x[flake_block], y[flake_block], z[flake_block];
+            PathStarts starts;
+            DepositCandidates listed;
+        };
+        Block blocks[2];
+        Block* previous = nullptr;
+        for (std::size_t b = begin, k = 0; b < end; b += flake_block, ++k) {
+            const std::size_t e = std::min(end, b + flake_block);
+            Block& block = blocks[k % 2];
+            block.starts = {block.x, block.y, block.z, b};
+            integrate_block(in, chunk, block.starts, b, e);
+            BlockCandidates flagged;
+            const auto removed =
+                collide_block(co, chunk, block.starts, b, e, share ? &flagged : nullptr);
+            if (de != nullptr) {
+                deposit_list(*de, chunk, block.starts, b, e, removed, share ? &flagged : nullptr,
+                             block.listed);
+                if (previous != nullptr) {
+                    deposit_land(*de, chunk, previous->starts, previous->listed);
+                }
+                previous = &block;
+            }
         }
+        if (previous != nullptr) {
+            deposit_land(*de, chunk, previous->starts, previous->listed);
+        }
+    };
+    // One reference captured: the job pool's function holds it without allocating.
+    for_chunks(w, n, flake_grain, [&chunk_of_blocks](std::size_t c, std::size_t b, std::size_t e) {
+        chunk_of_blocks(c, b, e);
     });
     integrate_end(w, in);
     collide_end(w, co);
@@ -107,8 +137,11 @@ void collide_system(World& w) {
 
 void deposit_system(World& w) {
     const auto all = [](const DepositTick& t, std::size_t chunk, const PathStarts& starts,
-                        std::size_t b,
-                        std::size_t e) { deposit_block(t, chunk, starts, b, e, {}); };
+                        std::size_t b, std::size_t e) {
+        DepositCandidates listed;
+        deposit_list(t, chunk, starts, b, e, {}, nullptr, listed);
+        deposit_land(t, chunk, starts, listed);
+    };
     run_alone(w, deposit_begin(w), all, deposit_end);
 }
 

@@ -70,7 +70,7 @@ void integrate_end(World& w, const IntegrateTick& t);
 /// slots [b, e). Returns the slots of the block it will remove (ascending),
 /// which the later stages skip.
 /// With `shared`, the block's flagged slots (collide's and deposit's) are
-/// also listed there for deposit_block; collide tests only its own among them.
+/// also listed there for deposit_list; collide tests only its own among them.
 CollideTick& collide_begin(World& w);
 /// Makes this tick's prefilter flag every flake deposit's prefilter would
 /// flag too (for the flake pass; a stage run alone keeps its own flags).
@@ -84,15 +84,29 @@ void collide_end(World& w, const CollideTick& t);
 /// `removed` (ascending); with `shared`, only its slots are looked at (the
 /// pass's shared prefilter already passed over the rest). Begin returns null
 /// when nothing can land (no surface or no flake): then the stage is skipped.
+/// A block's detection has two halves: deposit_list lists the flakes that
+/// may land and starts loading the surface cells under them (scattered over
+/// the ground, rarely in cache), deposit_land tests them exactly and records
+/// the landings; between the two the pass runs the next block, so the loads
+/// have arrived.
 DepositTick* deposit_begin(World& w);
 [[nodiscard]] const DepositBins& deposit_bins(const DepositTick& t);
 /// Whether the flake pass shares collide's prefilter this tick (after
 /// deposit_begin): when few slots passed deposit's own last tick (a choice
 /// of speed only: both ways give the same landings).
 [[nodiscard]] bool deposit_prefilter_sparse(const World& w);
-void deposit_block(const DepositTick& t, std::size_t chunk, const PathStarts& starts, std::size_t b,
-                   std::size_t e, std::span<const std::uint32_t> removed,
-                   const BlockCandidates* shared = nullptr);
+/// The slots of one block deposit_list found may land (ascending), each
+/// with its prefilter bin.
+struct DepositCandidates {
+    std::uint32_t slots[flake_block];
+    std::uint32_t bins[flake_block];
+    std::size_t count = 0;
+};
+void deposit_list(const DepositTick& t, std::size_t chunk, const PathStarts& starts, std::size_t b,
+                  std::size_t e, std::span<const std::uint32_t> removed,
+                  const BlockCandidates* shared, DepositCandidates& out);
+void deposit_land(const DepositTick& t, std::size_t chunk, const PathStarts& starts,
+                  const DepositCandidates& listed);
 void deposit_end(World& w, const DepositTick& t);
 
 } // namespace snow
