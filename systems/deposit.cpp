@@ -141,8 +141,9 @@ bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uin
     return next < removed.size() && removed[next] == slot;
 }
 
-/// Starts loading what find_landing reads for a flake at (x, z) in `bin`:
-/// the cell of each surface of the bin under it. The few flakes of a block
+/// Starts loading what find_landing and roll_target read for a flake at
+/// (x, z) in `bin`: the cell of each surface of the bin under it and its
+/// neighbours. The few flakes of a block
 /// that may land lie scattered over cells its other flakes never touch, so
 /// each would wait for its cells in turn; loaded together, the waits overlap.
 void prefetch_landing(const DepositTick& p, std::uint32_t bin, float x, float z) {
@@ -150,8 +151,12 @@ void prefetch_landing(const DepositTick& p, std::uint32_t bin, float x, float z)
     for (std::uint32_t k = d.bin_start[bin]; k < d.bin_start[bin + 1]; ++k) {
         const SnowSurface& s = p.surfaces[d.bin_items[k]];
         std::uint32_t ix = 0, iz = 0;
-        if (s.cell_at(x, z, ix, iz)) {
-            const std::size_t c = s.index(ix, iz);
+        if (!s.cell_at(x, z, ix, iz)) {
+            continue;
+        }
+        // The cell and the rows above and below it (roll_target's neighbours).
+        for (const std::uint32_t row : {iz > 0 ? iz - 1 : iz, iz, iz + 1 < s.nz ? iz + 1 : iz}) {
+            const std::size_t c = s.index(ix, row);
             __builtin_prefetch(s.base_level.data() + c);
             __builtin_prefetch(s.snow.data() + c);
             if (!s.compacted.empty()) {
