@@ -13,11 +13,13 @@ namespace snow {
 inline constexpr std::size_t flake_grain = 16384;
 
 /// Items (flake slots) below which for_chunks keeps the work on the calling
-/// thread. A flake pass costs 1–3 ns per slot; handing chunks to a second
-/// core costs tens of µs (waking its thread, moving the chunks' cache lines
-/// to it), so below about this size two threads were slower than one
-/// (BM_SimTickAloft at 100k slots, BM_VillageTick; docs/performance.md).
-inline constexpr std::size_t parallel_min_items = 16 * flake_grain;
+/// thread: four chunks. A flake pass costs 1–4 ns per slot; since the pool's
+/// threads poll before they sleep (job_pool.cpp), handing chunks to a second
+/// core costs a few µs, and from four chunks on two threads are clearly
+/// faster (BM_SimTick 100k 1.31×, 300k 1.79×); with one or two chunks the
+/// gain is within noise (30k: 1.02×), so the work stays on one thread
+/// (docs/performance.md).
+inline constexpr std::size_t parallel_min_items = 4 * flake_grain;
 
 /// World resource wrapping the pool owned by the Simulation (may be null: serial).
 struct Jobs {
