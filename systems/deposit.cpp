@@ -196,9 +196,7 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
     if (shared != nullptr) {
         for (std::size_t k = 0; k < shared->count; ++k) {
             const std::uint32_t slot = shared->slots[k];
-            std::uint8_t flag = 0;
-            flag_deposit_candidates(d, px + slot, py + slot, pz + slot, 1, &flag);
-            if (flag != 0) {
+            if (d.under_bin_top(px[slot], py[slot], pz[slot])) {
                 ++passed;
                 list(slot);
             }

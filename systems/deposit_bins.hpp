@@ -75,6 +75,13 @@ struct DepositBins {
     [[nodiscard]] bool may_land(float y, float y_start) const {
         return y <= floor_top || y >= upper_bare || y_start >= upper_bare;
     }
+    /// flag_deposit_candidates' test for one flake: (x, z) is over a bin and
+    /// y not above its top.
+    [[nodiscard]] bool under_bin_top(float x, float y, float z) const {
+        std::uint32_t bin = 0;
+        const bool in = grid.bin_of(x, z, bin);
+        return in & (y <= bin_top[bin]);
+    }
 };
 
 /// Brings the bins up to date with the surfaces (pool order) of version
