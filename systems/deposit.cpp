@@ -143,9 +143,9 @@ bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uin
 
 /// Starts loading what find_landing and roll_target read for a flake at
 /// (x, z) in `bin`: the cell of each surface of the bin under it and its
-/// neighbours. The few flakes of a block
-/// that may land lie scattered over cells its other flakes never touch, so
-/// each would wait for its cells in turn; loaded together, the waits overlap.
+/// neighbours. The few flakes of a block that may land lie scattered over
+/// cells its other flakes never touch, so each would wait for its cells in
+/// turn; loaded a block ahead, the waits overlap with other work.
 void prefetch_landing(const DepositTick& p, std::uint32_t bin, float x, float z) {
     const DepositBins& d = p.bins;
     for (std::uint32_t k = d.bin_start[bin]; k < d.bin_start[bin + 1]; ++k) {
