@@ -182,10 +182,10 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
     const float* pz = p.pool->pz.data();
     out.count = 0;
     std::size_t next_removed = 0;
-    const auto list = [&](std::uint32_t slot) {
-        std::uint32_t bin = 0;
+    // A flake the bin test passed, over `bin`.
+    const auto list = [&](std::uint32_t slot, std::uint32_t bin) {
         if (d.may_land(py[slot], st.y[slot - st.base]) && p.pool->mass_units[slot] != 0 &&
-            d.grid.bin_of(px[slot], pz[slot], bin) && !skipped(removed, next_removed, slot)) {
+            !skipped(removed, next_removed, slot)) {
             prefetch_landing(p, bin, px[slot], pz[slot]);
             __builtin_prefetch(p.pool->id.data() + slot);
             out.slots[out.count] = slot;
@@ -196,9 +196,10 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
     if (shared != nullptr) {
         for (std::size_t k = 0; k < shared->count; ++k) {
             const std::uint32_t slot = shared->slots[k];
-            if (d.under_bin_top(px[slot], py[slot], pz[slot])) {
+            std::uint32_t bin = 0;
+            if (d.grid.under_top(px[slot], py[slot], pz[slot], d.bin_top.data(), bin)) {
                 ++passed;
-                list(slot);
+                list(slot, bin);
             }
         }
         return;
@@ -212,7 +213,10 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
         std::memcpy(&word, flag + j, sizeof word);
         for (; word != 0; word &= word - 1) {
             ++passed;
-            list(static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8));
+            const auto slot = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
+            std::uint32_t bin = 0;
+            (void)d.grid.bin_of(px[slot], pz[slot], bin); // flagged: over a bin
+            list(slot, bin);
         }
     }
 }

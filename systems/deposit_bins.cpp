@@ -150,8 +150,7 @@ void flag_deposit_candidates(const DepositBins& bins, const float* __restrict px
     const float* __restrict bin_top = bins.bin_top.data();
     for (std::size_t j = 0; j < n; ++j) {
         std::uint32_t bin = 0;
-        const bool in = g.bin_of(px[j], pz[j], bin);
-        flags[j] = static_cast<std::uint8_t>(in & (py[j] <= bin_top[bin]));
+        flags[j] = static_cast<std::uint8_t>(g.under_top(px[j], py[j], pz[j], bin_top, bin));
     }
 }
 

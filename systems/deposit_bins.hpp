@@ -34,6 +34,12 @@ struct BinGrid {
         bin = in ? static_cast<std::uint32_t>(fz) * nbx + static_cast<std::uint32_t>(fx) : 0u;
         return in;
     }
+    /// Whether (x, z) is over a bin (its index to `bin`) and y is not above
+    /// that bin's entry of `tops` (one per bin): the deposit prefilter's test.
+    bool under_top(float x, float y, float z, const float* tops, std::uint32_t& bin) const {
+        const bool in = bin_of(x, z, bin);
+        return in & (y <= tops[bin]);
+    }
     /// The same column / row computation, clamped into the grid.
     [[nodiscard]] std::uint32_t column(float x) const { return clamped((x - gx0) * inv, nbx); }
     [[nodiscard]] std::uint32_t row(float z) const { return clamped((z - gz0) * inv, nbz); }
@@ -74,13 +80,6 @@ struct DepositBins {
     /// bare top, not crossing one.
     [[nodiscard]] bool may_land(float y, float y_start) const {
         return y <= floor_top || y >= upper_bare || y_start >= upper_bare;
-    }
-    /// flag_deposit_candidates' test for one flake: (x, z) is over a bin and
-    /// y not above its top.
-    [[nodiscard]] bool under_bin_top(float x, float y, float z) const {
-        std::uint32_t bin = 0;
-        const bool in = grid.bin_of(x, z, bin);
-        return in & (y <= bin_top[bin]);
     }
 };
 
