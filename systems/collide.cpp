@@ -179,8 +179,12 @@ struct FirstContact {
 };
 
 FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm::vec3& p) {
-    FirstContact first;
+    // The best hit so far in locals, the result built once: rebuilding it on
+    // every hit costs a reload of stores still in flight.
     float best = std::numeric_limits<float>::infinity();
+    std::uint32_t best_item = 0;
+    BoxContact best_box;
+    bool found = false;
     const float lo = std::min(p.y, p0.y);
     const std::uint32_t i0 = g.cell_x(std::min(p.x, p0.x)), i1 = g.cell_x(std::max(p.x, p0.x));
     const std::uint32_t j0 = g.cell_z(std::min(p.z, p0.z)), j1 = g.cell_z(std::max(p.z, p0.z));
@@ -205,12 +209,14 @@ FirstContact first_contact(const ColliderGrid& g, const glm::vec3& p0, const glm
                 }
                 if (hit && t < best) { // strict: the first listed wins a tie
                     best = t;
-                    first = FirstContact{item, k, t, true};
+                    best_item = item;
+                    best_box = k;
+                    found = true;
                 }
             }
         }
     }
-    return first;
+    return FirstContact{best_item, best_box, best, found};
 }
 
 /// Slides a flake may make along box faces in one tick (a corner between
@@ -243,8 +249,9 @@ Outcome grid_colliders(const Context& c, const glm::vec3& p0, glm::vec3& p, glm:
         // [WF §4]: to the nearest point outside (on the face); the motion
         // along the face is kept, so the flake slides and drifts build at
         // windward bases.
-        p[k.axis] = k.at[k.axis];
-        v[k.axis] = k.max_side ? std::max(v[k.axis], 0.0f) : std::min(v[k.axis], 0.0f);
+        p = with_component(p, k.axis, k.at[k.axis]);
+        v = with_component(v, k.axis,
+                           k.max_side ? std::max(v[k.axis], 0.0f) : std::min(v[k.axis], 0.0f));
         moved = true;
     }
     return Outcome::keep;

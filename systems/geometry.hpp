@@ -17,4 +17,11 @@ struct Aabb {
     [[nodiscard]] glm::vec3 size() const { return max - min; }
 };
 
+/// u with component `axis` (0 x, 1 y, 2 z) set to s. By selects, not an
+/// indexed store: an indexed store keeps the vector in memory, and its next
+/// whole read then waits for that store to land.
+[[nodiscard]] inline glm::vec3 with_component(const glm::vec3& u, int axis, float s) {
+    return {axis == 0 ? s : u.x, axis == 1 ? s : u.y, axis == 2 ? s : u.z};
+}
+
 } // namespace snow
