@@ -512,12 +512,21 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
         shared->count = candidates - first;
         std::copy(slots + first, slots + candidates, shared->slots);
     }
-    std::uint32_t n = first;
-    for (std::uint32_t k = first; k < candidates; ++k) {
-        const std::uint32_t i = slots[k];
-        if (c.shared && !own_flag(c, st, i)) {
-            continue; // flagged for deposit alone
+    // Shared flags: drop the slots flagged for deposit alone first, in a
+    // loop of its own, so the table reads of all of them are in flight at
+    // once instead of each waiting behind the exact tests before it.
+    std::uint32_t own_end = candidates;
+    if (c.shared) {
+        own_end = first;
+        for (std::uint32_t k = first; k < candidates; ++k) {
+            const std::uint32_t i = slots[k];
+            slots[own_end] = i; // own_end <= k
+            own_end += own_flag(c, st, i) ? 1u : 0u;
         }
+    }
+    std::uint32_t n = first;
+    for (std::uint32_t k = first; k < own_end; ++k) {
+        const std::uint32_t i = slots[k];
         // Colliders first: a flake whose path crosses a roof and ends below the
         // bounds floor in the same tick is stopped by the roof, not removed.
         if (std::isfinite(px[i]) && std::isfinite(py[i]) && std::isfinite(pz[i])) {
