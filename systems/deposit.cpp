@@ -141,6 +141,15 @@ bool skipped(std::span<const std::uint32_t> removed, std::size_t& next, std::uin
     return next < removed.size() && removed[next] == slot;
 }
 
+/// Starts loading what the deposition rules read of cell c.
+void prefetch_cell(const SnowSurface& s, std::size_t c) {
+    __builtin_prefetch(s.base_level.data() + c);
+    __builtin_prefetch(s.snow.data() + c);
+    if (!s.compacted.empty()) {
+        __builtin_prefetch(s.compacted.data() + c);
+    }
+}
+
 /// Starts loading what find_landing and roll_target read for a flake at
 /// (x, z) in `bin`: the cell of each surface of the bin under it and its
 /// neighbours. The few flakes of a block that may land lie scattered over
@@ -156,12 +165,7 @@ void prefetch_landing(const DepositTick& p, std::uint32_t bin, float x, float z)
         }
         // The cell and the rows above and below it (roll_target's neighbours).
         for (const std::uint32_t row : {iz > 0 ? iz - 1 : iz, iz, iz + 1 < s.nz ? iz + 1 : iz}) {
-            const std::size_t c = s.index(ix, row);
-            __builtin_prefetch(s.base_level.data() + c);
-            __builtin_prefetch(s.snow.data() + c);
-            if (!s.compacted.empty()) {
-                __builtin_prefetch(s.compacted.data() + c);
-            }
+            prefetch_cell(s, s.index(ix, row));
         }
     }
 }
@@ -251,6 +255,9 @@ const DepositBins& deposit_bins(const DepositTick& t) {
 
 namespace {
 
+/// Landings ahead of the one applied whose target cell deposit_end prefetches.
+constexpr std::size_t landing_lookahead = 8;
+
 /// Whether a landing applied since stamp `first` added snow to a tile that
 /// holds cell c or one of its neighbours (the cells roll_target reads), so
 /// the target the pass found may be stale. Tiles, not cells: the stamps stay
@@ -322,7 +329,14 @@ void deposit_end(World& w, const DepositTick& d) {
     const std::uint64_t first = ++d.applied; // every stamp from before is older
     // Apply in chunk order = slot order: later landings see earlier ones' snow.
     for (const auto& chunk : d.chunks) {
-        for (const LandingRecord& r : chunk) {
+        for (std::size_t k = 0; k < chunk.size(); ++k) {
+            // The pass read these cells long ago: the target of a landing a
+            // few ahead starts loading now.
+            if (k + landing_lookahead < chunk.size()) {
+                const LandingRecord& ahead = chunk[k + landing_lookahead];
+                prefetch_cell(surfaces[ahead.surface], ahead.target);
+            }
+            const LandingRecord& r = chunk[k];
             SnowSurface& s = surfaces[r.surface];
             std::vector<std::uint64_t>& touched = d.touched[r.surface];
             const std::size_t dst =
