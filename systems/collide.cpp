@@ -454,16 +454,29 @@ std::uint32_t flag_block(const Context& c, const PathStarts& st, std::size_t b, 
     return flag_block<with_bodies>(c, CellTop{c.grid, c.reach}, st, b, e, flags);
 }
 
-/// needs_tests() by the grid's own table, for one flake the shared table
-/// flagged (it may have been flagged for deposit alone).
-bool own_flag(const Context& c, const PathStarts& st, std::size_t i) {
+/// needs_tests() by the grid's own table for `count` listed slots the shared
+/// table flagged (some only for deposit): 1 in own[k] where collide itself
+/// must look at slots[k]. Selects only, so the loop vectorises (gathers).
+template <bool with_bodies>
+void own_flags(const Context& c, const PathStarts& st, const std::uint32_t* __restrict slots,
+               std::size_t count, std::uint8_t* __restrict own) {
     const FlakePool& f = *c.pool;
-    const std::size_t o = i - st.base;
-    const CellTop own{c.grid, c.grid->cell_reach.data()};
-    return c.body_count > 0 ? needs_tests<true>(c, own, f.px[i], f.py[i], f.pz[i], st.x[o], st.y[o],
-                                                st.z[o], f.mass_units[i])
-                            : needs_tests<false>(c, own, f.px[i], f.py[i], f.pz[i], st.x[o],
-                                                 st.y[o], st.z[o], f.mass_units[i]);
+    const std::uint32_t* mass = f.mass_units.data();
+    const float* px = f.px.data();
+    const float* py = f.py.data();
+    const float* pz = f.pz.data();
+    const float* sx = st.x - st.base;
+    const float* sy = st.y - st.base;
+    const float* sz = st.z - st.base;
+    const Context local = c; // copies: the flag stores cannot alias them
+    const CellTop table{c.grid, c.grid->cell_reach.data()};
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t i = slots[k];
+        own[k] = needs_tests<with_bodies>(local, table, px[i], py[i], pz[i], sx[i], sy[i], sz[i],
+                                          mass[i])
+                     ? 1
+                     : 0;
+    }
 }
 
 } // namespace
@@ -512,16 +525,21 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
         shared->count = candidates - first;
         std::copy(slots + first, slots + candidates, shared->slots);
     }
-    // Shared flags: drop the slots flagged for deposit alone first, in a
-    // loop of its own, so the table reads of all of them are in flight at
-    // once instead of each waiting behind the exact tests before it.
+    // Shared flags: drop the slots flagged for deposit alone first, all at
+    // once (a vector loop) rather than one by one between exact tests.
     std::uint32_t own_end = candidates;
     if (c.shared) {
+        alignas(64) std::uint8_t own[flake_block];
+        const std::size_t listed = candidates - first;
+        if (c.body_count > 0) {
+            own_flags<true>(c, st, slots + first, listed, own);
+        } else {
+            own_flags<false>(c, st, slots + first, listed, own);
+        }
         own_end = first;
-        for (std::uint32_t k = first; k < candidates; ++k) {
-            const std::uint32_t i = slots[k];
-            slots[own_end] = i; // own_end <= k
-            own_end += own_flag(c, st, i) ? 1u : 0u;
+        for (std::size_t k = 0; k < listed; ++k) {
+            slots[own_end] = slots[first + k]; // own_end <= first + k
+            own_end += own[k];
         }
     }
     std::uint32_t n = first;
