@@ -21,9 +21,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -504,23 +502,10 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
     std::uint32_t* slots = c.scratch->slots.data() + chunk * flake_grain;
     Removal* reasons = c.scratch->reasons.data() + chunk * flake_grain;
     const std::uint32_t first = c.scratch->counts[chunk];
-    // List the flagged slots, 8 flags per word: most words are zero (flakes
-    // high above everything), so the scan costs a load per 8 slots, and
-    // nothing in a block with none flagged.
-    std::uint32_t candidates = first;
+    // List the flagged slots (none when nothing is flagged).
     const std::size_t m = flagged > 0 ? e - b : 0;
-    const std::size_t whole = m & ~std::size_t{7};
-    for (std::size_t j = 0; j < whole; j += 8) {
-        std::uint64_t word = 0;
-        std::memcpy(&word, flags + j, sizeof word);
-        for (; word != 0; word &= word - 1) {
-            slots[candidates++] = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
-        }
-    }
-    for (std::size_t j = whole; j < m; ++j) {
-        slots[candidates] = static_cast<std::uint32_t>(b + j);
-        candidates += flags[j];
-    }
+    std::fill(flags + m, flags + ((m + 7) & ~std::size_t{7}), std::uint8_t{0});
+    const std::uint32_t candidates = first + list_flagged(flags, m, b, slots + first);
     if (shared != nullptr) {
         shared->count = candidates - first;
         std::copy(slots + first, slots + candidates, shared->slots);

@@ -20,9 +20,7 @@
 #include "systems/systems.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -212,16 +210,14 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
     const std::size_t m = e - b;
     flag_deposit_candidates(d, px + b, py + b, pz + b, m, flag);
     std::fill(flag + m, flag + flake_block, std::uint8_t{0});
-    for (std::size_t j = 0; j < m; j += 8) {
-        std::uint64_t word = 0;
-        std::memcpy(&word, flag + j, sizeof word);
-        for (; word != 0; word &= word - 1) {
-            ++passed;
-            const auto slot = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
-            std::uint32_t bin = 0;
-            (void)d.grid.bin_of(px[slot], pz[slot], bin); // flagged: over a bin
-            list(slot, bin);
-        }
+    std::uint32_t flagged[flake_block];
+    const std::uint32_t count = list_flagged(flag, m, b, flagged);
+    passed += count;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const std::uint32_t slot = flagged[k];
+        std::uint32_t bin = 0;
+        (void)d.grid.bin_of(px[slot], pz[slot], bin); // flagged: over a bin
+        list(slot, bin);
     }
 }
 
