@@ -527,6 +527,15 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
             own_end += own[k];
         }
     }
+    // The grid's cells under the paths' ends start loading for all of them
+    // (the pass's stream has long evicted them).
+    const ColliderGrid& g = *c.grid;
+    for (std::uint32_t k = first; k < own_end; ++k) {
+        const std::uint32_t i = slots[k];
+        const std::size_t cell = std::size_t{g.cell_z(pz[i])} * g.nx + g.cell_x(px[i]);
+        __builtin_prefetch(g.cell_top.data() + cell);
+        __builtin_prefetch(g.cell_start.data() + cell);
+    }
     std::uint32_t n = first;
     for (std::uint32_t k = first; k < own_end; ++k) {
         const std::uint32_t i = slots[k];
