@@ -36,18 +36,17 @@ std::uint32_t column(float u, float start, float inv_width) {
     return static_cast<std::uint32_t>(static_cast<std::int32_t>(t));
 }
 
-/// Each slot's key: its tile, then its (z, x) column in the tile
-/// (flake_order_tile), or free_key when free (sorting after
-/// every column, so free slots land at or past `alive`, where nothing reads
-/// them).
+/// The key of each of `count` slots: its tile, then its (z, x) column in the
+/// tile (flake_order_tile), or free_key when free (sorting after every
+/// column, so free slots land at or past `alive`, where nothing reads them).
 void slot_keys(const float* __restrict px, const float* __restrict pz,
-               const std::uint32_t* __restrict mass, std::uint32_t end, const Aabb bounds,
+               const std::uint32_t* __restrict mass, std::uint32_t count, const Aabb bounds,
                std::uint32_t* __restrict key) {
     const float inv_x = static_cast<float>(flake_order_bins) / (bounds.max.x - bounds.min.x);
     const float inv_z = static_cast<float>(flake_order_bins) / (bounds.max.z - bounds.min.z);
     const float x0 = bounds.min.x, z0 = bounds.min.z;
     constexpr std::uint32_t t = flake_order_tile, tiles = flake_order_bins / t;
-    for (std::uint32_t s = 0; s < end; ++s) {
+    for (std::uint32_t s = 0; s < count; ++s) {
         const std::uint32_t cz = column(pz[s], z0, inv_z), cx = column(px[s], x0, inv_x);
         const std::uint32_t tile = (cz / t) * tiles + cx / t;
         key[s] = mass[s] != 0 ? tile * t * t + (cz % t) * t + cx % t : free_key;
@@ -97,11 +96,10 @@ void flake_order_system(World& w) {
     FlakeOrder& o = w.resource<FlakeOrder>();
     const Aabb& bounds = w.resource<SimConfig>().bounds;
     const std::uint32_t end = f.slot_end;
-    slot_keys(f.px.data(), f.pz.data(), f.mass_units.data(), end, bounds, o.keys.data());
     // A stable counting sort in two halves of the slots, one per core when
-    // the pool is large: each counts its keys, the offsets put the first
-    // half's flakes of a key before the second's, and each half places its
-    // own. The same order as one pass in slot order.
+    // the pool is large: each keys and counts its slots, the offsets put the
+    // first half's flakes of a key before the second's, and each half places
+    // its own. The same order as one pass in slot order.
     const std::uint32_t* key = o.keys.data();
     const std::uint32_t mid = end / 2;
     const auto half_range = [&](std::size_t half, std::uint32_t& b, std::uint32_t& e) {
@@ -113,6 +111,8 @@ void flake_order_system(World& w) {
         std::fill(count, count + o.counts[half].size(), 0u);
         std::uint32_t b = 0, e = 0;
         half_range(half, b, e);
+        slot_keys(f.px.data() + b, f.pz.data() + b, f.mass_units.data() + b, e - b, bounds,
+                  o.keys.data() + b);
         for (std::uint32_t s = b; s < e; ++s) {
             ++count[key[s]];
         }
