@@ -79,8 +79,11 @@ else
     fi
     echo "[perf] running snow_bench (load before: $(loadavg))"
     echo "load_bench_before $(loadavg)" >>"$OUT/run.txt"
+    # Repetitions of all benchmarks in random order: the VM's slow minutes
+    # then fall on one thread and two alike, not on whichever ran then.
     "$BUILD_DIR/bench/snow_bench" --benchmark_filter="$FILTER" \
-        --benchmark_repetitions="$REPS" --benchmark_report_aggregates_only=true \
+        --benchmark_repetitions="$REPS" --benchmark_enable_random_interleaving=true \
+        --benchmark_report_aggregates_only=true \
         --benchmark_out="$OUT/perf.json" --benchmark_out_format=json "$@"
     echo "load_bench_after $(loadavg)" >>"$OUT/run.txt"
     echo "[perf] load after: $(loadavg)"
