@@ -504,7 +504,6 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
     const std::uint32_t first = c.scratch->counts[chunk];
     // List the flagged slots (none when nothing is flagged).
     const std::size_t m = flagged > 0 ? e - b : 0;
-    std::fill(flags + m, flags + ((m + 7) & ~std::size_t{7}), std::uint8_t{0});
     const std::uint32_t candidates = first + list_flagged(flags, m, b, slots + first);
     if (shared != nullptr) {
         shared->count = candidates - first;

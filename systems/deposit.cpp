@@ -209,7 +209,6 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
     alignas(64) std::uint8_t flag[flake_block];
     const std::size_t m = e - b;
     flag_deposit_candidates(d, px + b, py + b, pz + b, m, flag);
-    std::fill(flag + m, flag + flake_block, std::uint8_t{0});
     std::uint32_t flagged[flake_block];
     const std::uint32_t count = list_flagged(flag, m, b, flagged);
     passed += count;

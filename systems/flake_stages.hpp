@@ -61,30 +61,37 @@ struct BlockCandidates {
     std::size_t count = 0;
 };
 
-/// Writes b + j for every j < m whose flags[j] is 1 (flags are 0 or 1, and 0
-/// from m up to a multiple of 8) to `out`, ascending; returns how many.
-/// Flagged slots are few and scattered: the words (8 flags) holding one are
-/// listed first without a branch, where a branch per word would mispredict
-/// on most of them.
+/// Writes b + j for every j < m whose flags[j] is 1 (flags are 0 or 1) to
+/// `out`, ascending; returns how many. Flagged slots are few and scattered:
+/// the words (8 flags) holding one are kept first without a branch, where a
+/// branch per word would mispredict on most of them.
 inline std::uint32_t list_flagged(const std::uint8_t* flags, std::size_t m, std::size_t b,
                                   std::uint32_t* out) {
-    std::uint32_t words[flake_block / 8];
+    std::uint64_t words[flake_block / 8];
+    std::uint32_t at[flake_block / 8];
     std::uint32_t word_count = 0;
-    for (std::size_t w = 0; w < (m + 7) / 8; ++w) {
+    const auto keep = [&](std::uint64_t word, std::size_t w) {
+        words[word_count] = word;
+        at[word_count] = static_cast<std::uint32_t>(w);
+        word_count += word != 0 ? 1u : 0u;
+    };
+    const std::size_t whole = m / 8;
+    for (std::size_t w = 0; w < whole; ++w) {
         std::uint64_t word = 0;
         std::memcpy(&word, flags + 8 * w, sizeof word);
-        words[word_count] = static_cast<std::uint32_t>(w);
-        word_count += word != 0 ? 1u : 0u;
+        keep(word, w);
+    }
+    if (m % 8 != 0) { // the last flags, short of a word
+        std::uint64_t word = 0;
+        std::memcpy(&word, flags + 8 * whole, m % 8);
+        keep(word, whole);
     }
     std::uint32_t n = 0;
     for (std::uint32_t k = 0; k < word_count; ++k) {
-        const std::size_t j = std::size_t{8} * words[k];
-        std::uint64_t word = 0;
-        std::memcpy(&word, flags + j, sizeof word);
-        do {
+        const std::size_t j = std::size_t{8} * at[k];
+        for (std::uint64_t word = words[k]; word != 0; word &= word - 1) {
             out[n++] = static_cast<std::uint32_t>(b + j + std::countr_zero(word) / 8);
-            word &= word - 1;
-        } while (word != 0);
+        }
     }
     return n;
 }

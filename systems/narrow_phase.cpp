@@ -3,11 +3,8 @@
 // flake-against-moving-body test.
 #include "systems/narrow_phase.hpp"
 
-#include <glm/common.hpp>
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace snow {
 
