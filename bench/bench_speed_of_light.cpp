@@ -159,14 +159,15 @@ class SpeedOfLight {
         tops_.top.assign(static_cast<std::size_t>(side) * side, 0.0f);
         tops_.snow.assign(tops_.top.size(), 0);
         deposits_.resize(flakes);
-        counts_.resize(JobPool::chunk_count(flakes, flake_grain));
+        counts_.resize(chunk_count(flakes, flake_grain));
     }
 
     void tick() {
         const Pass pass{&pool_, tops_.top.data(), deposits_.data(), counts_.data(), tick_};
-        jobs_.parallel_for(
-            pool_.slot_end, flake_grain,
-            [p = &pass](std::size_t c, std::size_t b, std::size_t e) { run_chunk(*p, c, b, e); });
+        const std::size_t n = pool_.slot_end;
+        jobs_.parallel_for(chunk_count(n, flake_grain), [p = &pass, n](std::size_t c) {
+            run_chunk(*p, c, c * flake_grain, std::min(n, (c + 1) * flake_grain));
+        });
         for (std::size_t c = 0; c < counts_.size(); ++c) { // chunk order: slot order
             for (std::uint32_t k = 0; k < counts_[c]; ++k) {
                 const Deposit& d = deposits_[c * flake_grain + k];

@@ -14,7 +14,7 @@ include(CMakePackageConfigHelpers)
 # visible change here; snow_check_header_closure() fails the configure step
 # when an include was added or dropped without updating these lists.
 set(SNOW_SIM_HEADERS
-    include/snow/snow.hpp
+    include/snow/snow.hpp include/snow/task_system.hpp
     ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
     ecs/world.hpp
     systems/body.hpp systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp
@@ -98,6 +98,13 @@ endfunction()
 snow_public_target(snow_sim include/snow/snow.hpp SNOW_SIM_HEADERS "^(render|game)/")
 snow_public_target(snow_scene include/snow/scene.hpp SNOW_SCENE_HEADERS "^render/.*(context|renderer)")
 snow_public_target(snow_render include/snow/render.hpp SNOW_RENDER_HEADERS "^game/")
+# The C API reaches no header but its own (and the C library's).
+if(TARGET snow_c)
+    set(SNOW_C_HEADERS include/snow/snow.h)
+    snow_check_header_closure(include/snow/snow.h SNOW_C_HEADERS "^(ecs|systems|render|game)/")
+    list(APPEND SNOW_EXPORTED snow_c)
+    list(APPEND SNOW_INSTALLED_HEADERS ${SNOW_C_HEADERS})
+endif()
 list(REMOVE_DUPLICATES SNOW_INSTALLED_HEADERS)
 
 foreach(t ${SNOW_EXPORTED})

@@ -1,6 +1,5 @@
 #include "ecs/job_pool.hpp"
 
-#include <algorithm>
 #include <chrono>
 
 namespace snow {
@@ -48,17 +47,15 @@ void JobPool::drain() {
     std::size_t done_here = 0;
     for (;;) {
         const std::size_t c = next_.fetch_add(1, std::memory_order_acq_rel);
-        if (c >= chunks_) {
+        if (c >= count_) {
             break;
         }
-        const std::size_t begin = c * grain_;
-        const std::size_t end = std::min(n_, begin + grain_);
-        (*job_)(c, begin, end);
+        (*job_)(c);
         ++done_here;
     }
     if (done_here > 0) {
         std::lock_guard lock(mutex_);
-        if (finished_.fetch_add(done_here, std::memory_order_acq_rel) + done_here == chunks_) {
+        if (finished_.fetch_add(done_here, std::memory_order_acq_rel) + done_here == count_) {
             done_.notify_all();
         }
     }
@@ -80,32 +77,26 @@ void JobPool::worker_loop() {
     }
 }
 
-void JobPool::parallel_for(std::size_t n, std::size_t grain, const ChunkFn& fn) {
-    const std::size_t chunks = chunk_count(n, grain);
-    if (chunks == 0) {
-        return;
-    }
-    if (workers_.empty() || chunks == 1) {
-        for (std::size_t c = 0; c < chunks; ++c) {
-            fn(c, c * grain, std::min(n, (c + 1) * grain));
+void JobPool::parallel_for(std::size_t count, TaskFn task) {
+    if (workers_.empty() || count <= 1) {
+        for (std::size_t c = 0; c < count; ++c) {
+            task(c);
         }
         return;
     }
     {
         std::lock_guard lock(mutex_);
-        job_ = &fn;
-        n_ = n;
-        grain_ = grain;
-        chunks_ = chunks;
+        job_ = &task;
+        count_ = count;
         finished_ = 0;
         next_.store(0, std::memory_order_release);
         ++epoch_;
     }
     wake_.notify_all();
     drain();
-    poll([&] { return finished_.load(std::memory_order_acquire) == chunks; });
+    poll([&] { return finished_.load(std::memory_order_acquire) == count; });
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return finished_ == chunks_; });
+    done_.wait(lock, [&] { return finished_ == count_; });
     job_ = nullptr;
 }
 

@@ -3,6 +3,7 @@
 // the settled snow out on request (--export, --export-depth).
 #include "game/builtin_scene.hpp"
 #include "game/cli_args.hpp"
+#include "game/export/snapshot_file.hpp"
 #include "game/export/snow_export.hpp"
 #include "game/run_report.hpp"
 #include "game/scene/scene_loader.hpp"
@@ -24,9 +25,12 @@ constexpr const char* usage_tail = R"(  --report json|text  what to print at the
   --export FILE.glb   after the run, write the settled snow as glTF 2.0 meshes
   --export-depth DIR  after the run, write each surface's depth as a 16-bit PNG
                       (millimetres) and a JSON sidecar into DIR
+  --load-state FILE   before the run, restore a snapshot of the same scene
+                      (written by --save-state); --ticks then runs on from it
+  --save-state FILE   after the run, write the simulation's snapshot (bytes)
   --help              this text
-Exit status: 0 ok, 2 bad arguments, bad scene or an export path that cannot
-be written, 1 other failure.
+Exit status: 0 ok, 2 bad arguments, bad scene, a snapshot that cannot be
+read or an output path that cannot be written, 1 other failure.
 )";
 
 struct Options {
@@ -35,6 +39,8 @@ struct Options {
     bool json = false;
     std::optional<std::string> export_glb;
     std::optional<std::string> export_depth;
+    std::optional<std::string> load_state;
+    std::optional<std::string> save_state;
     snow::SceneOverrides overrides;
 };
 
@@ -49,12 +55,17 @@ bool read_flag(std::string_view f, snow::cli::ArgReader& args, Options& o) {
             throw UsageError{"--report: expected json or text, got '" + std::string(r) + "'"};
         }
         o.json = r == "json";
-    } else if (f == "--export" || f == "--export-depth") {
+    } else if (f == "--export" || f == "--export-depth" || f == "--load-state" ||
+               f == "--save-state") {
         const std::string_view path = args.value();
         if (path.empty()) {
             throw UsageError{std::string(f) + ": expected a path"};
         }
-        (f == "--export" ? o.export_glb : o.export_depth) = std::string(path);
+        auto& slot = f == "--export"         ? o.export_glb
+                     : f == "--export-depth" ? o.export_depth
+                     : f == "--load-state"   ? o.load_state
+                                             : o.save_state;
+        slot = std::string(path);
     } else {
         return false;
     }
@@ -67,6 +78,21 @@ Options parse(int argc, char** argv) {
         argc, argv, {usage_head, usage_tail}, {o.scene, o.overrides},
         [&](std::string_view f, snow::cli::ArgReader& args) { return read_flag(f, args, o); });
     return o;
+}
+
+/// Restores --load-state's snapshot into `sim`; prints the error naming the
+/// flag and returns false when it cannot (`sim` is then unchanged).
+bool load_state(const Options& o, snow::Simulation& sim) {
+    if (!o.load_state) {
+        return true;
+    }
+    try {
+        snow::load_snapshot_file(sim, *o.load_state);
+        return true;
+    } catch (const snow::Error& e) {
+        std::fprintf(stderr, "snow_run: --load-state: %s\n", e.what());
+        return false;
+    }
 }
 
 /// Writes the exports asked for; with no `sim`, only checks that their paths
@@ -82,6 +108,11 @@ bool write_exports(const Options& o, const snow::Simulation* sim) {
         if (o.export_depth) {
             sim ? snow::export_snow_depth(*sim, *o.export_depth)
                 : snow::prepare_output_dir(*o.export_depth);
+        }
+        flag = "--save-state";
+        if (o.save_state) {
+            sim ? snow::save_snapshot_file(*sim, *o.save_state)
+                : snow::check_file_writable(*o.save_state);
         }
         return true;
     } catch (const snow::ExportError& e) {
@@ -109,7 +140,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     // Unwritable export paths fail now, not after the run.
-    if (!write_exports(opt, nullptr)) {
+    if (!write_exports(opt, nullptr) || !load_state(opt, *scene.sim)) {
         return 2;
     }
     try {

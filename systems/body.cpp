@@ -2,6 +2,7 @@
 #include "systems/body.hpp"
 
 #include "systems/limits.hpp"
+#include "systems/state_bytes.hpp"
 #include "systems/units.hpp"
 
 #include <algorithm>
@@ -54,6 +55,55 @@ float snowball_radius(float bare_radius, std::uint64_t units) {
     const double r0 = bare_radius;
     const double volume = static_cast<double>(units) * unit_kg / packed_snow_density;
     return static_cast<float>(std::cbrt(r0 * r0 * r0 + 3.0 * volume / (4.0 * std::numbers::pi)));
+}
+
+namespace {
+
+template <typename Io, typename B>
+void body_record(Io& io, B& b) {
+    io(b.shape);
+    for (auto* v :
+         {&b.radius, &b.half_height, &b.bare_radius, &b.compaction, &b.along, &b.motion.speed}) {
+        io(*v);
+    }
+    for (auto* v : {&b.half_extents, &b.position, &b.previous, &b.velocity, &b.target}) {
+        io(*v);
+    }
+    for (auto* v : {&b.on_ground, &b.snowball, &b.has_target, &b.motion.loop}) {
+        io(*v);
+    }
+    io(b.motion.waypoints);
+    io(b.segment);
+    io(b.carried);
+}
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const Body& b) {
+    body_record(out, b);
+}
+
+void load_state(ByteReader& in, Body& b) {
+    body_record(in, b);
+    in.require_below(b.shape, BodyShape{3});
+    bool ok = true;
+    for (const float v :
+         {b.radius, b.half_height, b.bare_radius, b.compaction, b.along, b.motion.speed}) {
+        ok = ok && std::isfinite(v) && v >= 0.0f;
+    }
+    for (const glm::vec3& v : {b.half_extents, b.position, b.previous, b.velocity, b.target}) {
+        ok = ok && finite(v);
+    }
+    for (const glm::vec3& v : b.motion.waypoints) {
+        ok = ok && finite(v);
+    }
+    in.require(ok, "has a negative or non-finite size, speed or position");
+    in.require(b.motion.waypoints.empty() ? b.segment == 0 : b.segment < b.motion.waypoints.size(),
+               "heads from a waypoint its path does not have");
 }
 
 } // namespace snow

@@ -48,6 +48,14 @@ struct BodyDef {
 
 /// Component. `position` is this tick's, `previous` last tick's: trails and
 /// flake tests sweep between them.
+struct Body;
+class ByteWriter;
+class ByteReader;
+/// A body's snapshot record: every field (the host may have changed any).
+void save_state(ByteWriter& out, const Body& b);
+/// Reads a record of save_state into `b` (throws SimulationError naming what is wrong).
+void load_state(ByteReader& in, Body& b);
+
 struct Body {
     BodyShape shape = BodyShape::sphere;
     float radius = 0.25f;

@@ -574,7 +574,7 @@ void update_scratch(World& w, CollideScratch* s, const FlakePool& pool, const Co
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->units.resize(pool.capacity());
-    s->counts.resize(JobPool::chunk_count(pool.capacity(), flake_grain));
+    s->counts.resize(chunk_count(pool.capacity(), flake_grain));
     s->exact_block.resize(pool.capacity() / flake_block + 1);
     // Surfaces (covers too) move in memory only when one is added or removed;
     // the grid's list of them changes order only with the solids and the surfaces.

@@ -286,9 +286,9 @@ DepositTick* deposit_begin(World& w) {
     }
     update_deposit_bins(d->bins, surfaces, source_versions(w).surfaces);
     // Buffers for the whole pool (allocated once); work only up to slot_end.
-    const std::size_t chunk_count = JobPool::chunk_count(pool.capacity(), flake_grain);
-    if (d->chunks.size() != chunk_count) {
-        d->chunks.resize(chunk_count);
+    const std::size_t chunks = chunk_count(pool.capacity(), flake_grain);
+    if (d->chunks.size() != chunks) {
+        d->chunks.resize(chunks);
         for (auto& c : d->chunks) {
             c.reserve(256);
         }
@@ -303,7 +303,7 @@ DepositTick* deposit_begin(World& w) {
         passed += n;
     }
     d->sparse = d->scanned > 0 && passed * sparse_share <= d->scanned;
-    d->passed.assign(chunk_count, 0);
+    d->passed.assign(chunks, 0);
     d->scanned = pool.slot_end;
     d->pool = &pool;
     d->surfaces = surfaces.data();

@@ -1,6 +1,8 @@
 #include "systems/flake_pool.hpp"
 
 #include "systems/held_wind.hpp"
+#include "systems/limits.hpp"
+#include "systems/state_bytes.hpp"
 
 #include <algorithm>
 #include <new>
@@ -92,6 +94,78 @@ std::uint64_t FlakePool::airborne_units() const {
         sum += mass_units[i];
     }
     return sum;
+}
+
+namespace {
+
+/// The per-slot arrays up to slot_end; slots above it are as reset() left them.
+template <typename Io, typename Pool>
+void slot_arrays(Io& io, Pool& f) {
+    for (auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
+        io.block(a->data(), f.slot_end);
+    }
+    io.block(f.mass_units.data(), f.slot_end);
+    io.block(f.id.data(), f.slot_end);
+    if (f.holds_wind()) {
+        for (auto& a : f.held_wind) {
+            io.block(a.data(), f.slot_end);
+        }
+    }
+}
+
+/// Alive slots hold finite values and a mass within limits, free ones are
+/// parked, and the free stack lists each free slot once: what a run leaves.
+void check_slots(const ByteReader& in, const FlakePool& f) {
+    std::vector<bool> is_free(f.capacity(), false);
+    for (const std::uint32_t s : f.free_stack) {
+        in.require(s < f.capacity() && !is_free[s], "lists a free slot twice or past the pool");
+        is_free[s] = true;
+    }
+    std::uint32_t alive = 0;
+    for (std::uint32_t i = 0; i < f.capacity(); ++i) {
+        const bool live = f.mass_units[i] != 0;
+        in.require(live != is_free[i], "has a slot both alive and free (or neither)");
+        if (!live) {
+            continue;
+        }
+        ++alive;
+        in.require(f.mass_units[i] <= max_flake_units, "has a flake heavier than any flake can be");
+        for (const auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
+            in.require(std::isfinite((*a)[i]), "has a flake with a non-finite value");
+        }
+    }
+    in.require(alive == f.alive && f.max_alive >= alive, "miscounts its alive flakes");
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const FlakePool& f) {
+    out(f.capacity());
+    out(f.holds_wind());
+    for (const std::uint32_t v : {f.alive, f.max_alive, f.slot_end, f.next_id}) {
+        out(v);
+    }
+    slot_arrays(out, f);
+    out(f.free_stack);
+}
+
+void load_state(ByteReader& in, FlakePool& f) {
+    std::uint32_t capacity = 0;
+    bool held = false;
+    in(capacity);
+    in(held);
+    in.require(capacity == f.capacity(), "is for a flake pool of another size");
+    f.reset(capacity);
+    f.hold_wind(held);
+    in(f.alive);
+    in(f.max_alive);
+    in(f.slot_end);
+    in(f.next_id);
+    in.require(f.slot_end <= capacity, "has slots past the pool");
+    slot_arrays(in, f);
+    in(f.free_stack);
+    check_slots(in, f);
+    f.free_stack.reserve(capacity); // release() never allocates
 }
 
 } // namespace snow

@@ -112,6 +112,14 @@ struct FlakePool {
     [[nodiscard]] std::uint64_t airborne_units() const;
 };
 
+class ByteWriter;
+class ByteReader;
+/// The pool's snapshot record: the slots below slot_end and the free stack.
+void save_state(ByteWriter& out, const FlakePool& f);
+/// Reads a record of save_state into `f`, a pool of the capacity it was
+/// saved with (throws SimulationError naming what is wrong otherwise).
+void load_state(ByteReader& in, FlakePool& f);
+
 /// One airborne flake placed by hand (Simulation::place_flake): tests,
 /// benchmarks at a fixed load, or an embedder's own emitter.
 struct FlakeSpec {

@@ -230,8 +230,7 @@ IntegrateTick& integrate_begin(World& w) {
         t->lookahead = 0.5f * static_cast<float>(t->sample_every) * cfg.dt;
     }
     t->kind = cfg.integrator;
-    t->stiff.resize(
-        JobPool::chunk_count(f.capacity(), flake_grain)); // allocates once per pool size
+    t->stiff.resize(chunk_count(f.capacity(), flake_grain)); // allocates once per pool size
     std::fill(t->stiff.begin(), t->stiff.end(), 0u);
     return *t;
 }

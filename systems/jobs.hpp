@@ -1,11 +1,13 @@
 /// @file jobs.hpp
-/// @brief Access to the world's job pool from systems.
+/// @brief Handing a system's work to the simulation's TaskSystem.
 #pragma once
 
-#include "ecs/job_pool.hpp"
 #include "ecs/world.hpp"
 
 #include <algorithm>
+#include <cstddef>
+
+#include <snow/task_system.hpp>
 
 namespace snow {
 
@@ -13,52 +15,49 @@ namespace snow {
 inline constexpr std::size_t flake_grain = 16384;
 
 /// Items (flake slots) below which for_chunks keeps the work on the calling
-/// thread: four chunks. A flake pass costs 1–4 ns per slot; since the pool's
-/// threads poll before they sleep (job_pool.cpp), handing chunks to a second
-/// core costs a few µs, and from four chunks on two threads are clearly
-/// faster (BM_SimTick 100k 1.31×, 300k 1.79×); with one or two chunks the
-/// gain is within noise (30k: 1.02×), so the work stays on one thread
-/// (docs/performance.md).
+/// thread: four chunks. Handing chunks to another core costs a few µs, more
+/// than one or two chunks of a flake pass gain (docs/performance.md).
 inline constexpr std::size_t parallel_min_items = 4 * flake_grain;
 
-/// World resource wrapping the pool owned by the Simulation (may be null: serial).
-struct Jobs {
-    JobPool* pool = nullptr;
-    /// for_chunks hands work to the pool from this many items on; tests of
-    /// small scenes set 0 so their second thread takes chunks too.
-    std::size_t min_items = parallel_min_items;
-};
-
-/// Runs fn(chunk, begin, end) over [0, n) in chunks of `grain`, on the world's
-/// pool if it has one and n is at least its min_items, else serially;
-/// the chunks are the same either way, so are the results.
-inline void for_chunks(World& w, std::size_t n, std::size_t grain, const JobPool::ChunkFn& fn) {
-    const Jobs* jobs = w.try_resource<Jobs>();
-    if (jobs != nullptr && jobs->pool != nullptr && n >= jobs->min_items) {
-        jobs->pool->parallel_for(n, grain, fn);
-        return;
-    }
-    const std::size_t chunks = JobPool::chunk_count(n, grain);
-    for (std::size_t c = 0; c < chunks; ++c) {
-        fn(c, c * grain, std::min(n, (c + 1) * grain));
-    }
+/// Number of chunks of `grain` items that cover n items.
+[[nodiscard]] constexpr std::size_t chunk_count(std::size_t n, std::size_t grain) {
+    return grain == 0 ? 0 : (n + grain - 1) / grain;
 }
 
+/// World resource: the task system the Simulation runs on (the host's or its
+/// own pool; null: serial).
+struct Jobs {
+    TaskSystem* tasks = nullptr;
+    /// Work is handed out from this many items on; tests of small scenes set
+    /// 0 so other threads take chunks too.
+    std::size_t min_items = parallel_min_items;
+
+    [[nodiscard]] bool shares(std::size_t items) const {
+        return tasks != nullptr && tasks->concurrency() > 1 && items >= min_items;
+    }
+};
+
 /// Runs task(0) .. task(count − 1), independent of each other, on the
-/// world's pool when `items` (the work they share) is at least its
-/// min_items, else one after another on this thread. (The pool's function
-/// holds one reference, so nothing is allocated.)
+/// world's task system when `items` (the work they share) is at least its
+/// min_items, else one after another on this thread.
 template <typename Task>
 void for_tasks(World& w, std::size_t count, std::size_t items, const Task& task) {
     const Jobs* jobs = w.try_resource<Jobs>();
-    if (jobs != nullptr && jobs->pool != nullptr && items >= jobs->min_items) {
-        const JobPool::ChunkFn fn = [&task](std::size_t t, std::size_t, std::size_t) { task(t); };
-        jobs->pool->parallel_for(count, 1, fn);
+    if (jobs != nullptr && jobs->shares(items)) {
+        jobs->tasks->parallel_for(count, task);
         return;
     }
     for (std::size_t t = 0; t < count; ++t) {
         task(t);
     }
+}
+
+/// Runs fn(chunk, begin, end) over [0, n) in chunks of `grain`; the bounds
+/// are snow's whoever runs a chunk, so are the results.
+template <typename Fn>
+void for_chunks(World& w, std::size_t n, std::size_t grain, const Fn& fn) {
+    for_tasks(w, chunk_count(n, grain), n,
+              [&fn, n, grain](std::size_t c) { fn(c, c * grain, std::min(n, (c + 1) * grain)); });
 }
 
 } // namespace snow

@@ -8,6 +8,7 @@
 #include "systems/occlusion_raster.hpp"
 #include "systems/sim_config.hpp"
 #include "systems/snow_surface.hpp"
+#include "systems/state_bytes.hpp"
 #include "systems/systems.hpp"
 #include "systems/wind.hpp"
 
@@ -136,6 +137,41 @@ void occlusion_system(World& w) {
     if (auto* counters = w.try_resource<SimCounters>()) {
         ++counters->occlusion_refreshes;
     }
+}
+
+namespace {
+
+template <typename Io, typename Map>
+void map_record(Io& io, Map& m) {
+    for (auto* v : {&m.x0, &m.z0, &m.texel, &m.wind_angle, &m.shear_x, &m.shear_z}) {
+        io(*v);
+    }
+    io(m.width);
+    io(m.height);
+    io(m.top_y);
+    io(m.top_id);
+    io(m.built);
+    for (auto* v : {&m.built_from.solids, &m.built_from.surfaces, &m.built_from.occlusion}) {
+        io(*v);
+    }
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const OcclusionMap& m) {
+    map_record(out, m);
+}
+
+void load_state(ByteReader& in, OcclusionMap& m) {
+    map_record(in, m);
+    const std::size_t texels = static_cast<std::size_t>(m.width) * m.height;
+    in.require(m.top_y.size() == texels && m.top_id.size() == texels,
+               "has texels of another size than its width and height");
+    bool ok = std::isfinite(m.texel) && m.texel > 0.0f;
+    for (const float v : {m.x0, m.z0, m.wind_angle, m.shear_x, m.shear_z}) {
+        ok = ok && std::isfinite(v);
+    }
+    in.require(ok, "has a non-finite or empty projection");
 }
 
 } // namespace snow

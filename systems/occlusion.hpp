@@ -45,6 +45,14 @@ struct OcclusionMap {
     float shear_x = 0.0f, shear_z = 0.0f;
 };
 
+class ByteWriter;
+class ByteReader;
+/// A built map's snapshot record: its projection, lean, texels and the
+/// sources it was built from (not its version: a restore moves that on).
+void save_state(ByteWriter& out, const OcclusionMap& m);
+/// Reads a record of save_state into `m` (throws SimulationError naming what is wrong).
+void load_state(ByteReader& in, OcclusionMap& m);
+
 /// OcclusionMap::wind_angle when the projection does not lean (no tilt, no wind, calm).
 inline constexpr float occlusion_no_lean = -1.0f;
 /// Number of wind directions the tilted projection distinguishes (refresh granularity).

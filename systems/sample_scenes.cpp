@@ -12,6 +12,7 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     SimConfig cfg;
     cfg.seed = o.seed;
     cfg.threads = o.threads;
+    cfg.task_system = o.task_system;
     cfg.dt = o.dt;
     cfg.integrator = o.integrator;
     cfg.max_flakes = o.max_flakes;
@@ -78,9 +79,10 @@ BodyDef lapping(BodyShape shape, float radius, std::vector<glm::vec3> path) {
 
 } // namespace
 
-std::unique_ptr<Simulation> make_stormy_yard(unsigned threads) {
+std::unique_ptr<Simulation> make_stormy_yard(unsigned threads, TaskSystem* task_system) {
     YardOptions o;
     o.threads = threads;
+    o.task_system = task_system;
     o.ground_cells = 64;
     o.max_flakes = 60000;
     o.prefill = 40000;

@@ -14,6 +14,7 @@ namespace snow {
 struct YardOptions {
     std::uint64_t seed = 7;
     unsigned threads = 1;
+    TaskSystem* task_system = nullptr; ///< the host's (SimConfig::task_system)
     float dt = 1.0f / 60.0f;
     Integrator integrator = Integrator::explicit_euler;
     std::uint32_t ground_cells = 128; ///< ground surface is ground_cells² cells
@@ -34,7 +35,9 @@ struct YardOptions {
 /// mesh tent, both seen through a tilted sky camera whose lean follows the
 /// wind; a snow cover over a boulder; a snowball and a capsule walker doing
 /// laps through the ground's snow; a coarse wind field that moves snow.
-[[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads);
+/// `task_system`, when given, runs it instead of the built-in pool.
+[[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads,
+                                                           TaskSystem* task_system = nullptr);
 
 /// Flake number `n` of prefill_flakes: uniform in the upper half of the
 /// bounds, falling at 1 m/s, mass and place deterministic in the seed.

@@ -11,6 +11,8 @@
 
 namespace snow {
 
+class TaskSystem;
+
 enum class Integrator : std::uint8_t {
     explicit_euler,      ///< v += a·dt, p += v·dt ([WF], [ZCL]); guarded when stiff
     semi_implicit_euler, ///< implicit drag, then p += v_new·dt (never overshoots)
@@ -31,7 +33,12 @@ struct SimConfig {
     Integrator integrator = Integrator::explicit_euler;
     Aabb bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 12.0f, 10.0f}}; ///< flakes leaving it are removed
     std::uint32_t max_flakes = 50000;
+    /// Threads of the built-in pool (the caller is one of them); ignored
+    /// when the host gives its own task_system.
     unsigned threads = 1;
+    /// The host's task system (not owned; it must outlive the Simulation).
+    /// Null: the built-in pool. Results are the same either way.
+    TaskSystem* task_system = nullptr;
     /// Smoothing sub-iterations per surface per tick [WF §3]; a pile still
     /// moving after that many continues next tick.
     std::uint32_t smoothing_iterations = 64;

@@ -44,8 +44,12 @@ Simulation::Simulation(const SimConfig& config) {
     world_.set_resource<SourceVersions>();
     world_.set_resource<FlakePool>().reset(config.max_flakes);
     world_.set_resource<FlakeOrder>().reset(config.max_flakes);
-    jobs_ = std::make_unique<JobPool>(config.threads);
-    world_.set_resource<Jobs>(Jobs{jobs_.get()});
+    TaskSystem* tasks = config.task_system;
+    if (tasks == nullptr) {
+        jobs_ = std::make_unique<JobPool>(config.threads);
+        tasks = jobs_.get();
+    }
+    world_.set_resource<Jobs>(Jobs{tasks});
     build_schedule();
 }
 

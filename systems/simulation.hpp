@@ -24,9 +24,11 @@
 #include "systems/wind.hpp"
 #include "systems/wind_field.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace snow {
@@ -135,11 +137,22 @@ class Simulation {
     [[nodiscard]] std::unique_ptr<Snapshot> save() const;
     /// Throws SimulationError, changing nothing, for a snapshot of another scene.
     void restore(const Snapshot& s);
+    /// What save() holds, as versioned bytes (docs/embedding.md "Snapshots"):
+    /// for save games, replays and lockstep, in this process or another.
+    [[nodiscard]] std::vector<std::byte> save_bytes() const;
+    /// Restores bytes of save_bytes() taken from the same scene and settings
+    /// (loaded afresh or running). Throws SimulationError naming what is
+    /// wrong — cut short, corrupted, another format version, another scene —
+    /// and then changes nothing.
+    void load_bytes(std::span<const std::byte> bytes);
 
   private:
     friend struct InternalAccess; // systems/internal_access.hpp: tests of single systems
 
     void build_schedule();
+    /// A digest of the settings and the source data (docs/design.md): a
+    /// byte snapshot loads only where it matches.
+    [[nodiscard]] std::uint64_t scene_fingerprint() const;
     /// state_hash()'s digest of the sources, recomputed when their versions
     /// change (so state_hash() must not run on two threads at once).
     struct SourceDigest {

@@ -318,6 +318,13 @@ std::uint64_t Simulation::state_hash() const {
     return h.digest();
 }
 
+std::uint64_t Simulation::scene_fingerprint() const {
+    StateHasher h;
+    hash_config(h, world_.resource<SimConfig>());
+    h.value(source_digest(world_));
+    return h.digest();
+}
+
 std::unique_ptr<Snapshot> Simulation::save() const {
     auto s = std::make_unique<Snapshot>();
     s->flakes = world_.resource<FlakePool>();

@@ -11,6 +11,7 @@
 #include "systems/occlusion_raster.hpp"
 #include "systems/shed.hpp"
 #include "systems/snow_surface.hpp"
+#include "systems/state_bytes.hpp"
 #include "systems/systems.hpp"
 #include "systems/validation.hpp"
 
@@ -204,6 +205,37 @@ void cover_system(World& w) {
         cover.built = apply_base(w, s, target);
         cover.built_from = versions;
         derive_edges(s, cover);
+    }
+}
+
+namespace {
+
+template <typename Io, typename Cover>
+void cover_record(Io& io, Cover& c) {
+    io(c.built);
+    for (auto* v : {&c.built_from.solids, &c.built_from.surfaces, &c.built_from.occlusion}) {
+        io(*v);
+    }
+    io(c.column_top);
+    io(c.edge_cells);
+    io(c.edge_side);
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const SnowCover& c) {
+    cover_record(out, c);
+}
+
+void load_state(ByteReader& in, SnowCover& c, std::size_t cells) {
+    cover_record(in, c);
+    in.require(c.column_top.empty() || c.column_top.size() == cells,
+               "has column tops of another size than its surface");
+    in.require(c.edge_side.size() == c.edge_cells.size(), "has drop cells without their sides");
+    for (std::size_t k = 0; k < c.edge_cells.size(); ++k) {
+        in.require(c.edge_cells[k] < cells && (k == 0 || c.edge_cells[k - 1] < c.edge_cells[k]),
+                   "has drop cells out of order or past its surface");
+        in.require(c.edge_side[k] < 4, "has a drop towards no side");
     }
 }
 

@@ -50,6 +50,14 @@ struct SnowCover {
     std::vector<std::uint8_t> edge_side;
 };
 
+class ByteWriter;
+class ByteReader;
+/// A cover's snapshot record: what its base was built from, its column tops
+/// and its drop cells (its snow and base are its surface's record).
+void save_state(ByteWriter& out, const SnowCover& c);
+/// Reads a record of save_state into `c`, whose surface has `cells` cells.
+void load_state(ByteReader& in, SnowCover& c, std::size_t cells);
+
 /// Builds a cover's surface (every cell void until the cover system first
 /// builds its base); throws SimulationError naming the bad field for invalid values.
 [[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def);

@@ -2,6 +2,7 @@
 // `unit_height` so deposit and smoothing compare and move snow exactly.
 #include "systems/snow_surface.hpp"
 
+#include "systems/state_bytes.hpp"
 #include "systems/units.hpp"
 #include "systems/validation.hpp"
 
@@ -165,6 +166,85 @@ std::uint64_t SnowSurface::settled_units() const {
         sum += u;
     }
     return sum;
+}
+
+namespace {
+
+template <typename Io, typename Surface>
+void surface_record(Io& io, Surface& s) {
+    io(s.base_level);
+    io(s.uniform_base);
+    io(s.closed);
+    io(s.snow);
+    io(s.compacted);
+    for (auto* v : {&s.dirty_x0, &s.dirty_z0, &s.dirty_x1, &s.dirty_z1}) {
+        io(*v);
+    }
+    io(s.tile_dirty);
+    io(s.dirty_tiles);
+    io(s.level_bound);
+}
+
+/// A box is empty or lies inside `limit` (which it must, to be read by redistribute).
+bool box_inside(const CellBox& b, const CellBox& limit) {
+    return b.empty() ||
+           (b.x0 >= limit.x0 && b.x1 <= limit.x1 && b.z0 >= limit.z0 && b.z1 <= limit.z1);
+}
+
+/// The shapes and bounds a run keeps (cells, tiles, levels), so no later
+/// read leaves an array.
+void check_surface(const ByteReader& in, const SnowSurface& s) {
+    in.require(s.nx > 0 && s.nz > 0, "belongs to a surface without cells");
+    const std::size_t cells = static_cast<std::size_t>(s.nx) * s.nz;
+    const std::size_t tiles = static_cast<std::size_t>(s.tiles_x()) * s.tiles_z();
+    in.require(s.snow.size() == cells && s.base_level.size() == cells,
+               "has another number of cells than the scene's surface");
+    in.require(s.compacted.empty() || s.compacted.size() == cells,
+               "has a compaction of another size");
+    in.require(s.closed.empty() || s.closed.size() == cells, "has closed edges of another size");
+    in.require(s.tile_dirty.size() == tiles,
+               "has another number of tiles than the scene's surface");
+    constexpr std::int64_t level_limit = std::int64_t{1} << 40;
+    std::int64_t highest = std::numeric_limits<std::int64_t>::min();
+    for (std::size_t i = 0; i < cells; ++i) {
+        in.require(s.is_void(i) ||
+                       (s.base_level[i] > -level_limit && s.base_level[i] < level_limit),
+                   "has a base level out of range");
+        in.require(s.compacted.empty() || s.compacted[i] <= max_compaction(s.snow[i]),
+                   "has snow packed below its own mass");
+        in.require(s.closed.empty() || s.closed[i] <= closed_all, "has an unknown edge flag");
+        highest = s.is_void(i) ? highest : std::max(highest, s.level(i));
+    }
+    in.require(cells == 0 || s.level_bound >= highest, "has a level bound below its snow");
+    in.require(box_inside(CellBox{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1},
+                          CellBox{0, 0, s.nx - 1, s.nz - 1}),
+               "has dirty cells outside the surface");
+    std::vector<bool> listed(tiles, false);
+    for (const std::uint32_t t : s.dirty_tiles) {
+        in.require(t < tiles && !listed[t] && !s.tile_dirty[t].empty(),
+                   "lists a dirty tile twice, past the surface or clean");
+        listed[t] = true;
+    }
+    for (std::uint32_t t = 0; t < tiles; ++t) {
+        const std::uint32_t tx = (t % s.tiles_x()) << dirty_tile_shift;
+        const std::uint32_t tz = (t / s.tiles_x()) << dirty_tile_shift;
+        const CellBox tile{tx, tz, std::min(s.nx - 1, tx + (1u << dirty_tile_shift) - 1),
+                           std::min(s.nz - 1, tz + (1u << dirty_tile_shift) - 1)};
+        in.require(listed[t] != s.tile_dirty[t].empty() && box_inside(s.tile_dirty[t], tile),
+                   "has a dirty tile box outside its tile or unlisted");
+    }
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const SnowSurface& s) {
+    surface_record(out, s);
+}
+
+void load_state(ByteReader& in, SnowSurface& s) {
+    surface_record(in, s);
+    check_surface(in, s);
+    s.dirty_tiles.reserve(s.tile_dirty.size()); // mark_dirty never allocates
 }
 
 } // namespace snow

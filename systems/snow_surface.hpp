@@ -219,6 +219,16 @@ struct SnowSurface {
 };
 
 /// Component on a surface entity: the solid it lies on (null for the ground).
+class ByteWriter;
+class ByteReader;
+/// A surface's snapshot record: what ticks change (its snow, compaction,
+/// cells waiting for smoothing and, for a cover, its base); the placement
+/// and settings are the scene's.
+void save_state(ByteWriter& out, const SnowSurface& s);
+/// Reads a record of save_state into `s`, the same surface as the scene
+/// declares it (throws SimulationError naming what is wrong).
+void load_state(ByteReader& in, SnowSurface& s);
+
 struct SurfaceOf {
     Entity owner;
 };

@@ -6,6 +6,9 @@
 
 namespace snow {
 
+class ByteWriter;
+class ByteReader;
+
 /// World resource. Without it there is no wind system and air is still.
 struct Wind {
     glm::vec3 base{2.0f, 0.0f, 0.0f};    ///< mean wind (m/s)
@@ -18,5 +21,10 @@ struct Wind {
     float gust_duration = 1.5f;          ///< seconds
     float gust_left = 0.0f;              ///< state: seconds of the running gust
 };
+
+/// The wind's snapshot record: its settings and its walk and gust state.
+void save_state(ByteWriter& out, const Wind& w);
+/// Reads a record of save_state into `w` (its values are validated by the caller).
+void load_state(ByteReader& in, Wind& w);
 
 } // namespace snow

@@ -13,6 +13,7 @@
 // semi-Lagrangian trace reads that stillness into the cells behind them.
 #include "systems/wind_field.hpp"
 
+#include "systems/state_bytes.hpp"
 #include "systems/wind_field_solver.hpp"
 
 #include <algorithm>
@@ -677,6 +678,71 @@ double wind_field_divergence(const WindField& f, const WindFieldSolver& s) {
         }
     });
     return open > 0 ? sum / static_cast<double>(open) : 0.0;
+}
+
+namespace {
+
+template <typename Io, typename Def>
+void def_record(Io& io, Def& d) {
+    for (auto* v : {&d.cells_x, &d.cells_y, &d.cells_z, &d.update_every, &d.sample_every,
+                    &d.pressure_iterations}) {
+        io(*v);
+    }
+    io(d.eddy_viscosity);
+}
+
+template <typename Io, typename Field>
+void field_state_record(Io& io, Field& f, bool& transport) {
+    for (auto& v : f.velocity) {
+        io(v);
+    }
+    io(f.pressure);
+    io(f.inflow);
+    io(f.wait);
+    io(f.steps);
+    for (auto& v : f.at_centre) {
+        io(v);
+    }
+    io(transport);
+}
+
+template <typename Io, typename Transport>
+void transport_record(Io& io, Transport& t) {
+    for (auto* v : {&t.threshold, &t.rate, &t.max_fraction, &t.height}) {
+        io(*v);
+    }
+}
+
+} // namespace
+
+void save_state(ByteWriter& out, const WindField& f) {
+    def_record(out, f.def);
+    bool transport = f.transport.has_value();
+    field_state_record(out, f, transport);
+    if (transport) {
+        transport_record(out, *f.transport);
+    }
+}
+
+void load_def(ByteReader& in, WindFieldDef& def) {
+    def_record(in, def);
+}
+
+void load_state(ByteReader& in, WindField& f) {
+    bool transport = false;
+    field_state_record(in, f, transport);
+    bool ok = std::isfinite(f.inflow.x) && std::isfinite(f.inflow.y) && std::isfinite(f.inflow.z) &&
+              f.pressure.size() == f.centre.size() && all_finite(f.pressure);
+    for (int a = 0; a < 3; ++a) {
+        ok = ok && f.velocity[a].size() == f.face[a].size() && all_finite(f.velocity[a]) &&
+             f.at_centre[a].size() == f.centre.size() && all_finite(f.at_centre[a]);
+    }
+    in.require(ok, "has velocities of another grid or non-finite ones");
+    f.transport.reset();
+    if (transport) {
+        transport_record(in, f.transport.emplace());
+    }
+    pack_centre(f);
 }
 
 } // namespace snow

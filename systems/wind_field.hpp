@@ -225,6 +225,17 @@ inline WindSampler WindField::sampler() const {
 /// takes the global wind at its first step.
 [[nodiscard]] WindField make_wind_field(const WindFieldDef& def, const Aabb& bounds);
 
+class ByteWriter;
+class ByteReader;
+/// The field's snapshot record: its def, then its state and the cell-centre
+/// velocities (packed_centre is packed again on load).
+void save_state(ByteWriter& out, const WindField& f);
+/// Reads the def that starts a record of save_state.
+void load_def(ByteReader& in, WindFieldDef& def);
+/// Reads the rest of the record into `f`, made from that def (validated) by
+/// make_wind_field; throws SimulationError naming what is wrong.
+void load_state(ByteReader& in, WindField& f);
+
 /// Packs at_centre into packed_centre: after every step, and after anything
 /// else that writes at_centre.
 void pack_centre(WindField& f);

@@ -28,8 +28,11 @@ void write_bytes(const std::filesystem::path& path, const std::filesystem::path&
     if (f == nullptr) {
         fail(shown, std::strerror(errno));
     }
+    // Flushed to the disk before the rename, so a crash leaves the old file
+    // or the whole new one (docs/export.md).
     const bool wrote =
-        bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+        (bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size()) &&
+        std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
     const int write_errno = errno;
     if (std::fclose(f) != 0 || !wrote) {
         const int e = wrote ? errno : write_errno;

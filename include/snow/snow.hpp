@@ -10,3 +10,5 @@
 #include "systems/fixed_step.hpp"
 #include "systems/simulation.hpp"
 #include "systems/units.hpp"
+
+#include <snow/task_system.hpp>

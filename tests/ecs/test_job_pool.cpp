@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <vector>
@@ -12,9 +13,9 @@ namespace {
 
 std::vector<std::uint64_t> chunk_sums(unsigned threads, std::size_t n, std::size_t grain) {
     JobPool pool(threads);
-    std::vector<std::uint64_t> sums(JobPool::chunk_count(n, grain), 0);
-    pool.parallel_for(n, grain, [&](std::size_t c, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) {
+    std::vector<std::uint64_t> sums((n + grain - 1) / grain, 0);
+    pool.parallel_for(sums.size(), [&](std::size_t c) {
+        for (std::size_t i = c * grain; i < std::min(n, (c + 1) * grain); ++i) {
             sums[c] += i * i;
         }
     });
@@ -32,11 +33,7 @@ TEST(EcsJobPool, ReusedAcrossManyCalls) {
     JobPool pool(2);
     std::vector<int> hits(64, 0);
     for (int round = 0; round < 200; ++round) {
-        pool.parallel_for(64, 4, [&](std::size_t, std::size_t b, std::size_t e) {
-            for (std::size_t i = b; i < e; ++i) {
-                ++hits[i];
-            }
-        });
+        pool.parallel_for(hits.size(), [&](std::size_t i) { ++hits[i]; });
     }
     for (const int h : hits) {
         EXPECT_EQ(h, 200);

@@ -1,6 +1,7 @@
 // for_chunks (systems/jobs.hpp): work below Jobs::min_items stays on the
 // calling thread, and the chunks are the same whether the pool takes them
 // or not, so the results are too.
+#include "ecs/job_pool.hpp"
 #include "systems/jobs.hpp"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ struct ChunkRun {
 
 ChunkRun run_chunks(World& w, std::size_t n) {
     ChunkRun r;
-    r.bounds.resize(JobPool::chunk_count(n, flake_grain));
+    r.bounds.resize(chunk_count(n, flake_grain));
     r.thread.resize(r.bounds.size());
     for_chunks(w, n, flake_grain, [&](std::size_t c, std::size_t b, std::size_t e) {
         r.bounds[c] = {b, e};
