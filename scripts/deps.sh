@@ -14,6 +14,7 @@ packages=(
     xvfb xauth                                   # window tests without a display
     gnuplot-nox                                  # plots in docs/
     ffmpeg                                       # play.sh headless: the time-lapse as MP4
+    libirrlicht-dev                              # examples/irrlicht (snow inside the Irrlicht engine)
 )
 # The glTF validator test (npm gltf-validator) needs node and npm; any
 # install of them will do, so Debian's are added only when there are none.
