@@ -3,7 +3,7 @@
 // snow on 5 cm cells, each lapping its own square at 1.5 m/s, so every tick
 // each one ploughs fresh cells and pushes them to its rims. Only the body
 // and carve systems run (nothing falls), so the time is theirs alone.
-#include "systems/internal_access.hpp"
+#include "systems/api/internal_access.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -3,7 +3,7 @@
 // (ground mesh, four houses, a snowman, a ramp) with about 90k flakes in the
 // air in steady snowfall, under covers of 5 cm cells that are 256², 1024²
 // and 2048² cells large (the larger ones reach far past the yard).
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 // small shed that moves between two spots, so every iteration rebuilds.
 #include "bench_scene.hpp"
 
-#include "systems/internal_access.hpp"
+#include "systems/api/internal_access.hpp"
 
 #include <cmath>
 #include <vector>

@@ -11,7 +11,7 @@
 
 #include <snow/render.hpp>
 
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 #include <algorithm>
 #include <cmath>

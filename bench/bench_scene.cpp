@@ -1,7 +1,7 @@
 #include "bench_scene.hpp"
 
-#include "systems/colliders.hpp"
-#include "systems/flake_order.hpp"
+#include "systems/flakes/flake_order.hpp"
+#include "systems/geometry/colliders.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 /// @file bench_scene.hpp
 /// @brief The benchmark world of issue #8: N airborne flakes over a 512×512
 /// surface with a box and a sphere collider and wind (the yard of
-/// systems/sample_scenes.hpp), restored to its starting state periodically so
+/// tests/scenes/sample_scenes.hpp), restored to its starting state periodically so
 /// every measured tick sees about the same load.
 #pragma once
 
-#include "systems/sample_scenes.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <benchmark/benchmark.h>
 

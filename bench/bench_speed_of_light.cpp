@@ -16,11 +16,11 @@
 
 #include "ecs/job_pool.hpp"
 #include "ecs/rng.hpp"
-#include "systems/flake_pool.hpp"
-#include "systems/integrator.hpp"
-#include "systems/jobs.hpp"
-#include "systems/random_streams.hpp"
-#include "systems/units.hpp"
+#include "systems/core/jobs.hpp"
+#include "systems/core/random_streams.hpp"
+#include "systems/core/units.hpp"
+#include "systems/flakes/flake_pool.hpp"
+#include "systems/flakes/integrator.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -2,7 +2,7 @@
 // on (the dirty area), not by the surface's size; spill by the border.
 #include "bench_scene.hpp"
 
-#include "systems/internal_access.hpp"
+#include "systems/api/internal_access.hpp"
 
 #include <algorithm>
 #include <vector>

@@ -7,9 +7,9 @@
 // not the surface).
 #include "bench_scene.hpp"
 
-#include "systems/internal_access.hpp"
-#include "systems/mass_ledger.hpp"
-#include "systems/snow_surface.hpp"
+#include "systems/api/internal_access.hpp"
+#include "systems/core/mass_ledger.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 
 #include <cmath>
 #include <vector>

@@ -17,14 +17,17 @@ set(SNOW_SIM_HEADERS
     include/snow/snow.hpp include/snow/task_system.hpp
     ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
     ecs/world.hpp
-    systems/body.hpp systems/emitter.hpp systems/fixed_step.hpp systems/flake_pool.hpp
-    systems/fog.hpp systems/geometry.hpp systems/held_wind.hpp systems/mass_ledger.hpp
-    systems/occlusion.hpp
-    systems/sim_config.hpp systems/sim_counters.hpp systems/simulation.hpp
-    systems/simulation_error.hpp systems/snapshot.hpp systems/snow_cover.hpp
-    systems/snow_surface.hpp systems/source_versions.hpp systems/spectral_snow.hpp
-    systems/units.hpp systems/limits.hpp systems/wind.hpp systems/wind_field.hpp
-    systems/wind_transport.hpp)
+    systems/api/fixed_step.hpp systems/api/fog.hpp systems/api/simulation.hpp
+    systems/api/snapshot.hpp systems/api/spectral_snow.hpp
+    systems/bodies/body.hpp
+    systems/core/field_rules.hpp systems/core/limits.hpp systems/core/mass_ledger.hpp
+    systems/core/sim_config.hpp systems/core/sim_counters.hpp systems/core/simulation_error.hpp
+    systems/core/source_versions.hpp systems/core/units.hpp
+    systems/flakes/emitter.hpp systems/flakes/flake_pool.hpp systems/flakes/held_wind.hpp
+    systems/geometry/geometry.hpp
+    systems/sky/occlusion.hpp systems/sky/occlusion_map.hpp
+    systems/snowpack/snow_cover.hpp systems/snowpack/snow_surface.hpp
+    systems/wind/wind.hpp systems/wind/wind_field.hpp systems/wind/wind_transport.hpp)
 set(SNOW_SCENE_HEADERS
     include/snow/scene.hpp
     game/scene/scene_loader.hpp render/scene_visuals.hpp)

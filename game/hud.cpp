@@ -1,7 +1,7 @@
 #include "game/hud.hpp"
 
 #include "game/game_input.hpp"
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>

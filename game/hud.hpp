@@ -5,7 +5,7 @@
 #pragma once
 
 #include "render/frame_timings.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstdint>
 #include <optional>

@@ -1,7 +1,7 @@
 #include "game/run_report.hpp"
 
 #include "game/export/surface_list.hpp"
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 /// @brief The report snow_run prints: state hash, mass balance, per-system cost.
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "game/walker.hpp"
 
-#include "systems/colliders.hpp"
+#include "systems/geometry/colliders.hpp"
 
 #include <glm/geometric.hpp>
 

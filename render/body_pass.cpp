@@ -2,7 +2,7 @@
 // culled, so an eye inside one (the walk camera in its own capsule) sees out.
 #include "render/body_pass.hpp"
 
-#include "systems/body.hpp"
+#include "systems/bodies/body.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
 /// @file body_pass.hpp
-/// @brief Moving bodies (systems/body.hpp) drawn where the simulation has
+/// @brief Moving bodies (systems/bodies/body.hpp) drawn where the simulation has
 /// them this tick: lit spheres, upright capsules and boxes, read from the
 /// World's Body components. A snowball is snow-white and grows with what it
 /// carries; a capsule (a walker) wears a dark coat.

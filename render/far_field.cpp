@@ -1,6 +1,6 @@
 #include "render/far_field.hpp"
 
-#include "systems/spectral_snow.hpp"
+#include "systems/api/spectral_snow.hpp"
 
 #include <algorithm>
 

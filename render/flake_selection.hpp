@@ -3,7 +3,7 @@
 /// level of detail, a stable fraction of the distant ones. CPU only.
 #pragma once
 
-#include "systems/flake_pool.hpp"
+#include "systems/flakes/flake_pool.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

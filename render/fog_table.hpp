@@ -4,7 +4,7 @@
 /// 1-D table of the density's integral.
 #pragma once
 
-#include "systems/fog.hpp"
+#include "systems/api/fog.hpp"
 
 #include <glm/vec2.hpp>
 

@@ -2,7 +2,7 @@
 /// @brief Renderer knobs; the defaults suit the project's scenes.
 #pragma once
 
-#include "systems/occlusion.hpp"
+#include "systems/sky/occlusion.hpp"
 
 #include <glm/vec3.hpp>
 

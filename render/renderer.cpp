@@ -12,9 +12,9 @@
 #include "render/spectral_pass.hpp"
 #include "render/surface_pass.hpp"
 #include "render/wind_field_pass.hpp"
-#include "systems/body.hpp"
-#include "systems/fog.hpp"
-#include "systems/occlusion.hpp"
+#include "systems/api/fog.hpp"
+#include "systems/bodies/body.hpp"
+#include "systems/sky/occlusion.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -41,7 +41,7 @@ std::string gl_string(GLenum name) {
 }
 
 /// A finite value ≥ 0, else 0: bad fog numbers give no fog instead of NaN pixels.
-float non_negative(float v) {
+float clamp_non_negative(float v) {
     return std::isfinite(v) && v > 0.0f ? v : 0.0f;
 }
 
@@ -131,7 +131,7 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVi
     b.flake = {settings.flake_min_px, std::max(settings.flake_min_px, settings.flake_max_px),
                settings.flake_alpha,
                settings.flake_fade_distance > 0.0f ? 1.0f / settings.flake_fade_distance : 0.0f};
-    b.light_params = {non_negative(settings.light_falloff), 0.0f, 0.0f, 0.0f};
+    b.light_params = {clamp_non_negative(settings.light_falloff), 0.0f, 0.0f, 0.0f};
     int lights = 0;
     for (const PointLight& l : visuals.lights) {
         if (lights < max_point_lights) {
@@ -147,8 +147,8 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVi
     if (const Fog* fog = world.try_resource<Fog>()) {
         const float fog_param = fog->mode == FogMode::half_life
                                     ? (fog->half_distance > 0.0f ? 1.0f / fog->half_distance : 0.0f)
-                                    : non_negative(fog->density);
-        b.fog_color = glm::vec4(fog->color, non_negative(fog_param));
+                                    : clamp_non_negative(fog->density);
+        b.fog_color = glm::vec4(fog->color, clamp_non_negative(fog_param));
         // An empty or non-finite layer keeps a valid span for the shader; its table is all zero.
         const bool valid_layer = std::isfinite(fog->layer_bottom) &&
                                  std::isfinite(fog->layer_top) &&

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "render/gl_objects.hpp"
-#include "systems/fog.hpp"
-#include "systems/occlusion.hpp"
+#include "systems/api/fog.hpp"
+#include "systems/sky/occlusion.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "render/sky_pass.hpp"
 
-#include "systems/fog.hpp"
+#include "systems/api/fog.hpp"
 
 namespace snow {
 

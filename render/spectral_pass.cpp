@@ -3,10 +3,10 @@
 #include "render/far_field.hpp"
 #include "render/fullscreen.hpp"
 #include "render/spectral_volume.hpp"
-#include "systems/emitter.hpp"
-#include "systems/sim_config.hpp"
-#include "systems/validation.hpp"
-#include "systems/wind.hpp"
+#include "systems/api/validation.hpp"
+#include "systems/core/sim_config.hpp"
+#include "systems/flakes/emitter.hpp"
+#include "systems/wind/wind.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -8,7 +8,7 @@
 #include "render/gl_objects.hpp"
 #include "render/render_pass.hpp"
 #include "render/scene_depth.hpp"
-#include "systems/spectral_snow.hpp"
+#include "systems/api/spectral_snow.hpp"
 
 #include <cstdint>
 #include <optional>

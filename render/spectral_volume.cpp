@@ -1,7 +1,7 @@
 #include "render/spectral_volume.hpp"
 
 #include "ecs/rng.hpp"
-#include "systems/random_streams.hpp"
+#include "systems/core/random_streams.hpp"
 
 #include <glm/trigonometric.hpp>
 

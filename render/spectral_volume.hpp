@@ -6,7 +6,7 @@
 #pragma once
 
 #include "render/fft.hpp"
-#include "systems/spectral_snow.hpp"
+#include "systems/api/spectral_snow.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -6,7 +6,7 @@
 /// visible tile's level of detail. Reads the surface, never writes it.
 #pragma once
 
-#include "systems/snow_surface.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

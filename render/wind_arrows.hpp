@@ -4,7 +4,7 @@
 /// there is fast. Reads the field only; the wind-field pass draws it.
 #pragma once
 
-#include "systems/wind_field.hpp"
+#include "systems/wind/wind_field.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "bench/accuracy/depth_field.hpp"
-#include "systems/mass_ledger.hpp"
-#include "systems/sim_config.hpp"
-#include "systems/systems.hpp"
+#include "systems/api/systems.hpp"
+#include "systems/core/mass_ledger.hpp"
+#include "systems/core/sim_config.hpp"
 
 #include <cstdint>
 #include <string>

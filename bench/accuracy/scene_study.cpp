@@ -4,7 +4,7 @@
 // flakes (keys are (seed, tick, slot)), which the paired error relies on.
 #include "bench/accuracy/scene_study.hpp"
 
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 #include <algorithm>
 #include <utility>

@@ -4,9 +4,9 @@
 #include "bench/accuracy/trajectory_study.hpp"
 
 #include "bench/accuracy/cpu_clock.hpp"
-#include "systems/integrator.hpp"
-#include "systems/internal_access.hpp"
-#include "systems/sample_scenes.hpp"
+#include "systems/api/internal_access.hpp"
+#include "systems/flakes/integrator.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <algorithm>
 #include <cmath>

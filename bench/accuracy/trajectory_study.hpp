@@ -4,7 +4,7 @@
 /// real SoA integrate system, against the closed-form solution.
 #pragma once
 
-#include "systems/sim_config.hpp"
+#include "systems/core/sim_config.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -8,9 +8,9 @@
 
 #include "bench/accuracy/cpu_clock.hpp"
 #include "game/scene/scene_loader.hpp"
-#include "systems/ground_snow.hpp"
-#include "systems/internal_access.hpp"
-#include "systems/systems.hpp"
+#include "systems/api/internal_access.hpp"
+#include "systems/api/systems.hpp"
+#include "systems/snowpack/ground_snow.hpp"
 
 #include <glm/vec3.hpp>
 

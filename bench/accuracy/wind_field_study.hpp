@@ -6,7 +6,7 @@
 #pragma once
 
 #include "bench/accuracy/depth_field.hpp"
-#include "systems/wind_field.hpp"
+#include "systems/wind/wind_field.hpp"
 
 #include <cstdint>
 #include <cstdio>

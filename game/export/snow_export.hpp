@@ -5,7 +5,7 @@
 #pragma once
 
 #include "game/export/staged_files.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -5,7 +5,7 @@
 /// grid's border, a drop of a cover's base).
 #pragma once
 
-#include "systems/snow_surface.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 
 #include <glm/vec3.hpp>
 

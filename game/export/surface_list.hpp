@@ -4,7 +4,7 @@
 /// and exports.
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstdint>
 #include <string>

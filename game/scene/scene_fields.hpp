@@ -9,7 +9,7 @@
 #pragma once
 
 #include "game/scene/scene_error.hpp"
-#include "systems/field_rules.hpp"
+#include "systems/core/field_rules.hpp"
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>

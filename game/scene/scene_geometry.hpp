@@ -5,7 +5,7 @@
 #pragma once
 
 #include "game/scene/scene_document.hpp"
-#include "systems/geometry.hpp"
+#include "systems/geometry/geometry.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "render/scene_visuals.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -7,8 +7,7 @@
 // functions check the rest, and their messages are prefixed with the JSON path.
 #include "game/scene/scene_schema.hpp"
 
-#include "systems/settings_fields.hpp"
-#include "systems/validation.hpp"
+#include "systems/api/validation.hpp"
 
 #include <cmath>
 

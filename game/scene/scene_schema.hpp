@@ -6,7 +6,7 @@
 
 #include "game/scene/scene_fields.hpp"
 #include "render/scene_visuals.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstdint>
 #include <optional>

@@ -7,8 +7,8 @@
 /// See docs/embedding.md and docs/cover_and_bodies.md.
 #pragma once
 
-#include "systems/fixed_step.hpp"
-#include "systems/simulation.hpp"
-#include "systems/units.hpp"
+#include "systems/api/fixed_step.hpp"
+#include "systems/api/simulation.hpp"
+#include "systems/core/units.hpp"
 
 #include <snow/task_system.hpp>

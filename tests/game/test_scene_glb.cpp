@@ -6,7 +6,7 @@
 #include "tests/game/scene_test_files.hpp"
 #include "tests/support/run_app.hpp"
 
-#include "systems/colliders.hpp"
+#include "systems/geometry/colliders.hpp"
 
 #include <glm/geometric.hpp>
 

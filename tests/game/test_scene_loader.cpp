@@ -2,7 +2,7 @@
 // kind of bad input gives one error naming the file and the field, no Simulation.
 #include "tests/game/scene_test_files.hpp"
 
-#include "systems/colliders.hpp"
+#include "systems/geometry/colliders.hpp"
 
 #include <gtest/gtest.h>
 
@@ -95,7 +95,7 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     int on_nothing = 0, on_mesh = 0, on_box = 0, sloped = 0;
     w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
         if (w.has<SnowCover>(e)) {
-            return; // follows the geometry: tests/systems/test_cover.cpp
+            return; // follows the geometry: tests/systems/snowpack/test_cover.cpp
         }
         const Entity owner = surface_owner(w, s);
         on_nothing += owner.is_null();

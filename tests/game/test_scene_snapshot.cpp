@@ -1,5 +1,5 @@
 // Exact snapshots on every scene of assets/scenes (the code-built storm is in
-// tests/systems/test_snapshot.cpp): load, run 300 ticks, save, run on as the
+// tests/systems/api/test_snapshot.cpp): load, run 300 ticks, save, run on as the
 // reference, restore and run the same ticks again; the state hash agrees on
 // every tick and the flakes and snow at the end, bit for bit.
 #include "game/scene/scene_loader.hpp"

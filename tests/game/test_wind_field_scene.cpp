@@ -2,7 +2,7 @@
 // give one error naming the field, and in the village the field changes how
 // much snow lands leeward of the garage.
 #include "game/scene/scene_loader.hpp"
-#include "systems/ground_snow.hpp"
+#include "systems/snowpack/ground_snow.hpp"
 #include "tests/support/asset_text.hpp"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 /// cell statistics, and the reduced counts used in sanitizer/Debug builds.
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 // tolerances below bound that, and the ledger balances exactly in both.
 #include "hard_case_util.hpp"
 
-#include "systems/sample_scenes.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +25,7 @@ struct Yard {
     Entity ground, roof;
 };
 
-/// The sample yard (systems/sample_scenes.cpp) with every coordinate moved by
+/// The sample yard (tests/scenes/sample_scenes.cpp) with every coordinate moved by
 /// `o`, holding `flakes` prefilled flakes and no emitter.
 Yard yard_at(const glm::vec3& o, std::uint32_t flakes) {
     SimConfig cfg;

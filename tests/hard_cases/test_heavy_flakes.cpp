@@ -6,7 +6,7 @@
 // landing is smoothed; the shed's roof spills clumps cut into <= 1000 units.
 #include "hard_case_util.hpp"
 
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 namespace snow {
 namespace {

@@ -6,7 +6,7 @@
 // mostly through the downwind (+x) face.
 #include "hard_case_util.hpp"
 
-#include "systems/sample_scenes.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -150,7 +150,7 @@ TEST(HardCaseHurricane, WindStaysBoundedAndFlakesLeaveDownwind) {
 }
 
 TEST(HardCaseHurricane, NoFlakeIsBornBelowTheGround) {
-    // Found above (the "floor" exits): spawn.cpp places upwind-side flakes over
+    // Found above (the "floor" exits): spawn_system.cpp places upwind-side flakes over
     // the full height of the bounds, and scenes keep the bounds' floor below
     // the ground (the sample yard 0.5 m, the village 1 m) so that landing
     // flakes are not removed first. Side-born flakes below the ground fly

@@ -5,9 +5,9 @@
 #include "hard_case_util.hpp"
 
 #include "game/scene/scene_loader.hpp"
-#include "systems/colliders.hpp"
-#include "systems/sample_scenes.hpp"
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
+#include "systems/geometry/colliders.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <array>
 #include <cmath>

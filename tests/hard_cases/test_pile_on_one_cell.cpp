@@ -5,7 +5,7 @@
 // above the previous maximum, and with the mass exact on every tick.
 #include "hard_case_util.hpp"
 
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 namespace snow {
 namespace {

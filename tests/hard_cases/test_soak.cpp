@@ -7,7 +7,7 @@
 // and, on Linux, resident memory grows < 1 MiB from 10% to 100% of the run).
 #include "hard_case_util.hpp"
 
-#include "systems/sample_scenes.hpp"
+#include "tests/scenes/sample_scenes.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -4,7 +4,7 @@
 // v_t = wind + g/c monotonically (docs/design.md "Numerical stability").
 #include "hard_case_util.hpp"
 
-#include "systems/integrator.hpp"
+#include "systems/flakes/integrator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // landing the dirty rectangle stays small and snow stays near the landing.
 #include "hard_case_util.hpp"
 
-#include "systems/units.hpp"
+#include "systems/core/units.hpp"
 
 #include <string>
 #include <vector>

@@ -8,7 +8,7 @@
 #include "hard_case_util.hpp"
 
 #include "ecs/rng.hpp"
-#include "systems/random_streams.hpp"
+#include "systems/core/random_streams.hpp"
 
 #include <algorithm>
 

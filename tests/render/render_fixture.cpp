@@ -1,8 +1,8 @@
 #include "render_fixture.hpp"
 
 #include "render/renderer.hpp"
-#include "systems/flake_pool.hpp"
-#include "systems/occlusion.hpp"
+#include "systems/flakes/flake_pool.hpp"
+#include "systems/sky/occlusion.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>

@@ -10,9 +10,9 @@
 #include "render/osmesa_context.hpp"
 #include "render/render_settings.hpp"
 #include "render/scene_visuals.hpp"
-#include "systems/fog.hpp"
-#include "systems/geometry.hpp"
-#include "systems/snow_surface.hpp"
+#include "systems/api/fog.hpp"
+#include "systems/geometry/geometry.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // eye inside a body seeing out, and the pass only for worlds with bodies.
 #include "render/renderer.hpp"
 #include "render_fixture.hpp"
-#include "systems/body.hpp"
+#include "systems/bodies/body.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // volume of [LZ]: against a naive DFT, round trips, 3-D composition.
 #include "ecs/rng.hpp"
 #include "render/fft.hpp"
-#include "systems/random_streams.hpp"
+#include "systems/core/random_streams.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "render/flake_selection.hpp"
 #include "render/renderer.hpp"
 #include "render_fixture.hpp"
-#include "systems/flake_pool.hpp"
+#include "systems/flakes/flake_pool.hpp"
 
 #include <gtest/gtest.h>
 

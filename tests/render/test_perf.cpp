@@ -4,7 +4,7 @@
 // The numbers in docs/rendering.md come from here.
 #include "render/renderer.hpp"
 #include "render_fixture.hpp"
-#include "systems/flake_pool.hpp"
+#include "systems/flakes/flake_pool.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // the state (never writes it) and uses the occlusion system's map.
 #include "render/renderer.hpp"
 #include "render_fixture.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // of detail, re-upload of the changed tiles only.
 #include "render/renderer.hpp"
 #include "render_fixture.hpp"
-#include "systems/occlusion.hpp"
+#include "systems/sky/occlusion.hpp"
 
 #include <algorithm>
 #include <cmath>

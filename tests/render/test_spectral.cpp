@@ -4,8 +4,8 @@
 #include "render/renderer.hpp"
 #include "render/spectral_volume.hpp"
 #include "render_fixture.hpp"
-#include "systems/flake_pool.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
+#include "systems/flakes/flake_pool.hpp"
 
 #include <gtest/gtest.h>
 

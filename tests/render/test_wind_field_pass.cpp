@@ -5,7 +5,7 @@
 #include "render/renderer.hpp"
 #include "render/wind_arrows.hpp"
 #include "render_fixture.hpp"
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 #include "tests/support/steady_field.hpp"
 
 #include <gtest/gtest.h>

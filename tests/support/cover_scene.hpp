@@ -4,7 +4,7 @@
 /// box with drops at its sides; a declared roof rectangle the cover yields to).
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <memory>
 #include <vector>

@@ -2,7 +2,7 @@
 /// @brief Test support: the same settled snow in every cell of a surface.
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <cstdint>
 

@@ -4,7 +4,7 @@
 /// follows its id.
 #pragma once
 
-#include "systems/flake_pool.hpp"
+#include "systems/flakes/flake_pool.hpp"
 
 #include <cstdint>
 #include <optional>

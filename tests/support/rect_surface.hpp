@@ -2,7 +2,7 @@
 /// @brief Test support: a declared rectangle of snow surface with 10 cm cells.
 #pragma once
 
-#include "systems/snow_surface.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 
 namespace snow::test {
 

@@ -3,7 +3,7 @@
 /// dirty cell left.
 #pragma once
 
-#include "systems/internal_access.hpp"
+#include "systems/api/internal_access.hpp"
 
 namespace snow::test {
 

@@ -5,8 +5,8 @@
 /// never run a chunk on the second one.
 #pragma once
 
-#include "systems/internal_access.hpp"
-#include "systems/jobs.hpp"
+#include "systems/api/internal_access.hpp"
+#include "systems/core/jobs.hpp"
 
 namespace snow::test {
 

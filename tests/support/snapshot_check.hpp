@@ -5,7 +5,7 @@
 /// body at the end).
 #pragma once
 
-#include "systems/simulation.hpp"
+#include "systems/api/simulation.hpp"
 
 #include <gtest/gtest.h>
 

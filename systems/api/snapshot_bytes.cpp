@@ -1,0 +1,235 @@
+// Byte snapshots (Simulation::save_bytes / load_bytes): the Snapshot of
+// save() as versioned bytes for save games, replays and lockstep. Layout
+// (docs/embedding.md "Snapshots"): magic, format version, payload length,
+// a tag of the constants that shape the state, the scene's fingerprint, the
+// payload (one record per stateful type, each written beside its type,
+// gathered in the order below) and an FNV-1a checksum of all that precedes it.
+#include "systems/api/simulation.hpp"
+
+#include "ecs/state_hash.hpp"
+#include "systems/api/validation.hpp"
+#include "systems/core/limits.hpp"
+#include "systems/core/state_bytes.hpp"
+#include "systems/flakes/held_wind.hpp"
+
+#include <array>
+#include <string>
+
+namespace snow {
+
+namespace {
+
+constexpr std::array<char, 8> snapshot_magic{'S', 'N', 'O', 'W', 'S', 'N', 'A', 'P'};
+constexpr std::uint32_t snapshot_format = 1;
+/// magic + version + payload length; then the checksum after the payload.
+constexpr std::size_t header_bytes = snapshot_magic.size() + 4 + 8;
+constexpr std::size_t checksum_bytes = 8;
+
+/// The compile-time constants whose values the saved state depends on.
+std::uint64_t build_tag() {
+    StateHasher h;
+    h.value(max_flake_units);
+    h.value(dirty_tile_shift);
+    h.value(held_wind_steps_per_mps);
+    h.value(FlakePool::parked_y);
+    return h.digest();
+}
+
+std::uint64_t checksum(std::span<const std::byte> bytes) {
+    StateHasher h;
+    h.bytes(bytes.data(), bytes.size());
+    return h.digest();
+}
+
+void save_ledger(ByteWriter& out, const MassLedger& l, const SimCounters& c) {
+    for (const std::uint64_t v :
+         {l.spawned, l.removed_bounds, l.removed_sphere, l.removed_bare, l.removed_surface}) {
+        out(v);
+    }
+    for (const std::uint64_t v : {c.stiff_flake_ticks, c.landed, c.rolled, c.smoothing_iterations,
+                                  c.spilled_units, c.occlusion_refreshes, c.carved_units}) {
+        out(v);
+    }
+}
+
+void load_ledger(ByteReader& in, MassLedger& l, SimCounters& c) {
+    for (auto* v :
+         {&l.spawned, &l.removed_bounds, &l.removed_sphere, &l.removed_bare, &l.removed_surface}) {
+        in(*v);
+    }
+    for (auto* v : {&c.stiff_flake_ticks, &c.landed, &c.rolled, &c.smoothing_iterations,
+                    &c.spilled_units, &c.occlusion_refreshes, &c.carved_units}) {
+        in(*v);
+    }
+}
+
+/// Entity, record; for every T the snapshot holds.
+template <typename T>
+void save_each(ByteWriter& out, const std::vector<std::pair<Entity, T>>& items) {
+    out(static_cast<std::uint64_t>(items.size()));
+    for (const auto& [e, item] : items) {
+        out(e.bits);
+        save_state(out, item);
+    }
+}
+
+/// Reads what save_each wrote: each entity must hold a T in `world` (which
+/// gives the item its scene settings before `load` reads its state).
+template <typename T, typename Load>
+void load_each(ByteReader& in, const World& world, const char* what,
+               std::vector<std::pair<Entity, T>>& items, const Load& load) {
+    in.record(what);
+    std::uint64_t n = 0;
+    in(n);
+    in.require(n == world.count<T>(), "has another number of them than the scene");
+    for (std::uint64_t k = 0; k < n; ++k) {
+        in.record(std::string(what) + "[" + std::to_string(k) + "]");
+        Entity e;
+        in(e.bits);
+        const T* now = world.alive(e) ? world.try_get<T>(e) : nullptr;
+        in.require(now != nullptr, "belongs to an entity the scene does not have");
+        items.emplace_back(e, *now);
+        load(e, items.back().second);
+    }
+}
+
+/// Settings read from the bytes must be ones the facade would have accepted.
+void require_valid(const ByteReader& in, const Invalid& bad) {
+    if (!bad.empty()) {
+        in.fail("holds an invalid setting: " + bad.text());
+    }
+}
+
+} // namespace
+
+std::vector<std::byte> Simulation::save_bytes() const {
+    const std::unique_ptr<Snapshot> s = save();
+    ByteWriter out;
+    for (const char c : snapshot_magic) {
+        out(c);
+    }
+    out(snapshot_format);
+    out(std::uint64_t{0}); // payload length, filled in below
+    const std::size_t payload_at = out.bytes().size();
+    out(build_tag());
+    out(scene_fingerprint());
+    out(s->clock.tick);
+    save_ledger(out, s->ledger, s->counters);
+    save_state(out, s->flakes);
+    out(s->wind.has_value());
+    if (s->wind) {
+        save_state(out, *s->wind);
+    }
+    out(s->wind_field.has_value());
+    if (s->wind_field) {
+        save_state(out, *s->wind_field);
+    }
+    out(s->sky_map.has_value());
+    if (s->sky_map) {
+        save_state(out, *s->sky_map);
+    }
+    save_each(out, s->surfaces);
+    save_each(out, s->covers);
+    save_each(out, s->bodies);
+    std::vector<std::byte>& bytes = out.bytes();
+    const std::uint64_t payload = bytes.size() - payload_at;
+    std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
+    out(checksum(bytes));
+    return std::move(bytes);
+}
+
+void Simulation::load_bytes(std::span<const std::byte> bytes) {
+    ByteReader head(bytes);
+    if (bytes.size() < header_bytes + checksum_bytes) {
+        head.fail("is cut short (" + std::to_string(bytes.size()) +
+                  " bytes; a snapshot has at least " +
+                  std::to_string(header_bytes + checksum_bytes) + ")");
+    }
+    std::array<char, 8> magic{};
+    for (char& c : magic) {
+        head(c);
+    }
+    head.require(magic == snapshot_magic,
+                 "is not a snow snapshot (its first bytes are not SNOWSNAP)");
+    std::uint32_t format = 0;
+    head(format);
+    if (format != snapshot_format) {
+        head.fail("has format version " + std::to_string(format) + "; this build reads version " +
+                  std::to_string(snapshot_format));
+    }
+    std::uint64_t payload = 0;
+    head(payload);
+    const std::uint64_t present = bytes.size() - header_bytes - checksum_bytes;
+    if (payload != present) {
+        head.fail(std::string(payload > present ? "is cut short" : "has bytes past its end") +
+                  " (its header says " + std::to_string(payload) + " payload bytes, " +
+                  std::to_string(present) + " are there)");
+    }
+    std::uint64_t sum = 0;
+    std::memcpy(&sum, bytes.data() + bytes.size() - checksum_bytes, checksum_bytes);
+    head.require(sum == checksum(bytes.first(bytes.size() - checksum_bytes)),
+                 "is corrupted (its checksum does not match its bytes)");
+
+    ByteReader in(bytes.subspan(header_bytes, payload));
+    std::uint64_t tag = 0, scene = 0;
+    in(tag);
+    in.require(tag == build_tag(), "was written by a build with other simulation constants");
+    in(scene);
+    in.require(scene == scene_fingerprint(),
+               "belongs to a different scene or settings (its fingerprint differs)");
+    Snapshot s;
+    in.record("clock");
+    in(s.clock.tick);
+    in.record("ledger");
+    load_ledger(in, s.ledger, s.counters);
+    in.record("flakes");
+    s.flakes.reset(world_.resource<FlakePool>().capacity());
+    load_state(in, s.flakes);
+    in.record("wind");
+    bool wind = false;
+    in(wind);
+    if (wind) {
+        load_state(in, s.wind.emplace());
+        require_valid(in, validate(*s.wind));
+    }
+    in.record("wind_field");
+    bool field = false;
+    in(field);
+    if (field) {
+        WindFieldDef def;
+        load_def(in, def);
+        require_valid(in, validate(def));
+        s.wind_field = make_wind_field(def, config().bounds);
+        load_state(in, *s.wind_field);
+        if (s.wind_field->transport) {
+            require_valid(in, validate(*s.wind_field->transport));
+        }
+    }
+    in.record("sky_map");
+    bool map = false;
+    in(map);
+    if (map) {
+        load_state(in, s.sky_map.emplace());
+    }
+    load_each(in, world_, "surfaces", s.surfaces,
+              [&](Entity, SnowSurface& surface) { load_state(in, surface); });
+    load_each(in, world_, "covers", s.covers, [&](Entity e, SnowCover& cover) {
+        load_state(in, cover, world_.get<SnowSurface>(e).cell_count());
+    });
+    load_each(in, world_, "bodies", s.bodies, [&](Entity, Body& body) { load_state(in, body); });
+    in.record("");
+    in.require(in.left() == 0, "has bytes after its last record");
+
+    // Every unit accounted for, as at the end of every tick.
+    std::uint64_t held = s.flakes.airborne_units() + s.ledger.removed();
+    for (const auto& [e, surface] : s.surfaces) {
+        held += surface.settled_units();
+    }
+    for (const auto& [e, body] : s.bodies) {
+        held += body.carried;
+    }
+    in.require(held == s.ledger.spawned, "does not account for every unit of snow it spawned");
+    restore(s);
+}
+
+} // namespace snow

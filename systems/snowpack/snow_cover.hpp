@@ -1,0 +1,86 @@
+/// @file snow_cover.hpp
+/// @brief A snow cover: a heightfield of snow over whatever geometry lies
+/// under it. Its bare base in each column is the highest geometry seen from
+/// above there (the sky map of [SKY]), so snow gains depth on meshes,
+/// spheres, boxes and terrain without hand-declared rectangles.
+#pragma once
+
+#include "ecs/entity.hpp"
+#include "ecs/world.hpp"
+#include "systems/core/field_rules.hpp"
+#include "systems/core/limits.hpp"
+#include "systems/core/source_versions.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace snow {
+
+struct SnowSurface;
+
+/// Settings to create a cover; see Simulation::add_cover().
+struct CoverDef {
+    float min_x = -1.0f, min_z = -1.0f; ///< world rectangle the cover spans (m)
+    float max_x = 1.0f, max_z = 1.0f;
+    float cell = 0.1f;        ///< cell edge (m)
+    float edge_limit = 0.02f; ///< snow depth (m) at a drop above which the excess spills
+    float drop_limit = 0.15f; ///< a base step (m) larger than this between neighbours is an edge
+    float laplacian_limit = 20.0f; ///< cap on |∇²h| of the total height (1/m), [WF §3]
+    float repose_deg = 40.0f;      ///< snow on steeper total slopes slides down (degrees)
+};
+
+/// Component beside the SnowSurface of a cover entity: what its base was
+/// built from and the cells at drops, where spill looks.
+struct SnowCover {
+    float drop_limit = 0.15f;
+    /// False until a rebuild took all of the base to the geometry (and again
+    /// while one could not: the flake pool was full).
+    bool built = false;
+    /// The source versions the base was last built from; only solids and
+    /// surfaces matter (a cover follows the geometry, not the camera).
+    SourceVersions built_from;
+    /// The base follows the current solids and surfaces.
+    [[nodiscard]] bool current(const SourceVersions& now) const {
+        return built && built_from.solids == now.solids && built_from.surfaces == now.surfaces;
+    }
+    /// Per cell, the highest geometry of the column (m); -inf where none.
+    /// Kept so a void cell's neighbours know how far the ground drops.
+    std::vector<float> column_top;
+    /// Cells (ascending) with a neighbour lower by more than drop_limit (or
+    /// with no geometry at all): spill sheds their excess across that edge.
+    std::vector<std::uint32_t> edge_cells;
+    /// Per edge cell, the direction its spill leaves by (0 -x, 1 +x, 2 -z, 3 +z).
+    std::vector<std::uint8_t> edge_side;
+};
+
+class ByteWriter;
+class ByteReader;
+/// A cover's snapshot record: what its base was built from, its column tops
+/// and its drop cells (its snow and base are its surface's record).
+void save_state(ByteWriter& out, const SnowCover& c);
+/// Reads a record of save_state into `c`, whose surface has `cells` cells.
+void load_state(ByteReader& in, SnowCover& c, std::size_t cells);
+
+/// True for a cover's entity (its surface is snow over the geometry, not geometry).
+[[nodiscard]] bool is_cover(const World& w, Entity e);
+
+/// Builds a cover's surface (every cell void until the cover system first
+/// builds its base); throws SimulationError naming the bad field for invalid values.
+[[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def);
+
+/// `cover.*` [ZCL]; max > min per axis is checked by validate().
+inline constexpr FieldRule<CoverDef> cover_fields[] = {
+    {"min.x", &CoverDef::min_x},
+    {"min.z", &CoverDef::min_z},
+    {"max.x", &CoverDef::max_x},
+    {"max.z", &CoverDef::max_z},
+    {"cell", &CoverDef::cell, positive},
+    {"edge_limit", &CoverDef::edge_limit, non_negative},
+    {"drop_limit", &CoverDef::drop_limit, positive},
+    {"laplacian_limit", &CoverDef::laplacian_limit, positive},
+    {"repose_deg", &CoverDef::repose_deg, positive_up_to(max_repose_deg)},
+};
+
+[[nodiscard]] Invalid validate(const CoverDef& def);
+
+} // namespace snow

@@ -1,0 +1,133 @@
+// wind field obstacles: the grid cells colliders fill. Boxes cover the cells
+// between their faces rounded to the nearest cell face, spheres the cells
+// whose centres they contain, meshes the cells their triangles pass through
+// (a shell: air cannot cross it, so what it encloses needs no filling). A
+// collider thinner than a cell still fills one, so a fence blocks the wind.
+#include "systems/geometry/colliders.hpp"
+#include "systems/wind/wind_field_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace snow {
+
+namespace {
+
+/// Cells [lo, hi) along one axis.
+struct CellRange {
+    std::int32_t lo = 0, hi = 0;
+};
+
+/// The cells that world interval [a, b] covers along an axis of n cells:
+/// its ends rounded to the nearest face, or the one cell holding its middle
+/// when that rounds to nothing; clipped to the grid.
+CellRange cover(double a, double b, double origin, double inv_cell, std::int32_t n) {
+    const double ga = (a - origin) * inv_cell, gb = (b - origin) * inv_cell;
+    double lo = std::floor(ga + 0.5), hi = std::floor(gb + 0.5);
+    if (hi <= lo) {
+        lo = std::floor(0.5 * (ga + gb));
+        hi = lo + 1.0;
+    }
+    const double top = n;
+    return {static_cast<std::int32_t>(std::clamp(lo, 0.0, top)),
+            static_cast<std::int32_t>(std::clamp(hi, 0.0, top))};
+}
+
+/// Grid cell (cell coordinates) holding world point p; false outside.
+bool cell_of(const WindField& f, const glm::vec3& p, std::int32_t (&cell)[3]) {
+    for (int a = 0; a < 3; ++a) {
+        const double g = (static_cast<double>(p[a]) - f.origin[a]) * f.inv_cell[a];
+        if (!(g >= 0.0 && g < static_cast<double>(f.n[a]))) {
+            return false;
+        }
+        cell[a] = static_cast<std::int32_t>(g);
+    }
+    return true;
+}
+
+struct Marker {
+    const WindField& f;
+    std::vector<std::uint8_t>& solid;
+
+    void mark(std::int32_t i, std::int32_t j, std::int32_t k) {
+        solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
+    }
+    [[nodiscard]] CellRange range(int a, float lo, float hi) const {
+        return cover(lo, hi, f.origin[a], f.inv_cell[a], static_cast<std::int32_t>(f.n[a]));
+    }
+
+    void box(const Aabb& b) {
+        const CellRange x = range(0, b.min.x, b.max.x), y = range(1, b.min.y, b.max.y),
+                        z = range(2, b.min.z, b.max.z);
+        for (std::int32_t k = z.lo; k < z.hi; ++k) {
+            for (std::int32_t j = y.lo; j < y.hi; ++j) {
+                for (std::int32_t i = x.lo; i < x.hi; ++i) {
+                    mark(i, j, k);
+                }
+            }
+        }
+    }
+
+    void sphere(const SphereCollider& s) {
+        const CellRange x = range(0, s.center.x - s.radius, s.center.x + s.radius);
+        const CellRange y = range(1, s.center.y - s.radius, s.center.y + s.radius);
+        const CellRange z = range(2, s.center.z - s.radius, s.center.z + s.radius);
+        const double r2 = static_cast<double>(s.radius) * s.radius;
+        const auto centre = [&](int a, std::int32_t i) {
+            return f.origin[a] + (i + 0.5) / f.inv_cell[a] - s.center[a];
+        };
+        for (std::int32_t k = z.lo; k < z.hi; ++k) {
+            for (std::int32_t j = y.lo; j < y.hi; ++j) {
+                for (std::int32_t i = x.lo; i < x.hi; ++i) {
+                    const double dx = centre(0, i), dy = centre(1, j), dz = centre(2, k);
+                    if (dx * dx + dy * dy + dz * dz <= r2) {
+                        mark(i, j, k);
+                    }
+                }
+            }
+        }
+        std::int32_t c[3];
+        if (cell_of(f, s.center, c)) {
+            mark(c[0], c[1], c[2]); // a sphere smaller than a cell still blocks one
+        }
+    }
+
+    /// Points on the triangle closer together than half the smallest cell
+    /// edge: consecutive points fall in the same or touching cells, so the
+    /// marked cells form a surface air cannot pass between.
+    void triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+        const float spacing = 0.5f / std::max({f.inv_cell.x, f.inv_cell.y, f.inv_cell.z});
+        const glm::vec3 e1 = p1 - p0, e2 = p2 - p0, e3 = p2 - p1;
+        const auto length = [](const glm::vec3& e) {
+            return std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
+        };
+        const float longest = std::max({length(e1), length(e2), length(e3)});
+        const auto steps = static_cast<std::int32_t>(std::ceil(longest / spacing));
+        const std::int32_t n = std::clamp(steps, 1, 1 << 14);
+        for (std::int32_t a = 0; a <= n; ++a) {
+            for (std::int32_t b = 0; a + b <= n; ++b) {
+                const float s = static_cast<float>(a) / n, t = static_cast<float>(b) / n;
+                std::int32_t c[3];
+                if (cell_of(f, p0 + s * e1 + t * e2, c)) {
+                    mark(c[0], c[1], c[2]);
+                }
+            }
+        }
+    }
+};
+
+} // namespace
+
+void mark_obstacles(const World& w, const WindField& f, std::vector<std::uint8_t>& solid) {
+    solid.assign(f.centre.size(), 0);
+    Marker m{f, solid};
+    w.each<BoxCollider>([&](Entity, const BoxCollider& b) { m.box(b.box); });
+    w.each<SphereCollider>([&](Entity, const SphereCollider& s) { m.sphere(s); });
+    w.each<MeshCollider>([&](Entity, const MeshCollider& mesh) {
+        for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+            m.triangle(mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]);
+        }
+    });
+}
+
+} // namespace snow

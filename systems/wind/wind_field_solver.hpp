@@ -1,0 +1,66 @@
+/// @file wind_field_solver.hpp
+/// @brief Internals of the wind field (wind_field.cpp, wind_field_obstacles.cpp,
+/// wind_field_system.cpp): the obstacle cells and the solver's scratch.
+#pragma once
+
+#include "ecs/world.hpp"
+#include "systems/wind/wind_field.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace snow {
+
+/// Which sides of the box take the global wind in (bit set: inflow). The
+/// floor is a wall and the top is always open; the rest are open outflow.
+enum InflowSide : std::uint8_t {
+    inflow_x_min = 1,
+    inflow_x_max = 2,
+    inflow_z_min = 4,
+    inflow_z_max = 8,
+};
+
+/// The sides a wind blows in through: those it points away from.
+[[nodiscard]] std::uint8_t inflow_sides(const glm::vec3& wind);
+
+/// The pressure sweeps' arrays with each colour (i + j + k) & 1 of the
+/// centre lattice dense (layout in wind_field.cpp, odd_up): the pressure
+/// while the sweeps run, their right-hand side and the inverse diagonal.
+struct ColourSplit {
+    std::int32_t px = 0;    ///< row length: the lattice's x dim, rounded up to odd
+    std::int32_t plane = 0; ///< px · the lattice's y dim rounded up to odd
+    std::vector<float> pressure[2], rhs[2], inv_diag[2];
+};
+
+/// World resource beside a WindField: what the geometry makes of the grid
+/// (rebuilt when SourceVersions::solids changes) and buffers reused every step.
+/// Everything here follows from the geometry and the field's state.
+struct WindFieldSolver {
+    bool built = false;
+    std::uint64_t built_from_solids = 0; ///< SourceVersions::solids it was built from
+    std::vector<std::uint8_t> solid;     ///< per cell of the centre lattice (ghosts 0)
+    std::vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
+    std::vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
+    std::uint8_t diag_sides = 0xff;      ///< inflow sides inv_diag was built for
+    ColourSplit split;                   ///< the sweeps' arrays, by colour
+    std::vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
+    std::vector<float> divergence;
+};
+
+/// Marks the cells of the centre lattice that colliders fill: boxes, spheres
+/// and triangle meshes (wind_field_obstacles.cpp). `solid` is resized.
+void mark_obstacles(const World& w, const WindField& f, std::vector<std::uint8_t>& solid);
+
+/// Takes a new obstacle mask: rebuilds the face masks and stops the air in
+/// newly solid faces (the field's state changes, deterministically).
+void apply_obstacles(WindField& f, WindFieldSolver& s);
+
+/// One solver step of dt seconds with `inflow` (m/s) on the upwind sides; the
+/// first step fills the field with the inflow and projects it [STAM §3].
+void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, float dt);
+
+/// Mean |∇·u| over the open cells (1/s): how far the last projection is
+/// from incompressible (for tests).
+[[nodiscard]] double wind_field_divergence(const WindField& f, const WindFieldSolver& s);
+
+} // namespace snow

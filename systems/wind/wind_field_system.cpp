@@ -1,0 +1,35 @@
+// wind_field: steps the declared field every update_every ticks, after the
+// global wind moved (its walk and gusts are the inflow) and before flakes
+// integrate in it. Obstacles are re-marked when the geometry changed.
+#include "systems/api/systems.hpp"
+#include "systems/core/sim_config.hpp"
+#include "systems/core/source_versions.hpp"
+#include "systems/wind/wind.hpp"
+#include "systems/wind/wind_field_solver.hpp"
+
+namespace snow {
+
+void wind_field_system(World& w) {
+    WindField& f = w.resource<WindField>();
+    auto* s = w.try_resource<WindFieldSolver>();
+    if (s == nullptr) {
+        s = &w.set_resource<WindFieldSolver>();
+    }
+    const std::uint64_t solids = source_versions(w).solids;
+    if (!s->built || s->built_from_solids != solids) {
+        mark_obstacles(w, f, s->solid);
+        apply_obstacles(f, *s);
+        s->built = true;
+        s->built_from_solids = solids;
+    }
+    if (f.wait > 0) {
+        --f.wait;
+        return;
+    }
+    f.wait = f.def.update_every - 1;
+    const auto* wind = w.try_resource<Wind>();
+    const float dt = w.resource<SimConfig>().dt * static_cast<float>(f.def.update_every);
+    step_wind_field(f, *s, wind != nullptr ? wind->current : glm::vec3(0.0f), dt);
+}
+
+} // namespace snow

@@ -1,0 +1,51 @@
+// [WF §4]: flakes that run into a box are moved to its nearest outside
+// point and slide down, which builds a drift at the base of the windward side.
+#include "tests/scenes/sample_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+namespace snow {
+namespace {
+
+/// Settled units on the ground in the strip x0 <= x < x1, |z| < 1.5 (the garage's depth).
+std::uint64_t strip_units(const Simulation& sim, Entity ground, float x0, float x1) {
+    const auto& s = sim.world().get<SnowSurface>(ground);
+    std::uint64_t sum = 0;
+    for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+            const float x = s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell;
+            const float z = s.z0 + (static_cast<float>(iz) + 0.5f) * s.cell;
+            if (x >= x0 && x < x1 && z > -1.5f && z < 1.5f) {
+                sum += s.snow[s.index(ix, iz)];
+            }
+        }
+    }
+    return sum;
+}
+
+TEST(Drift, WindwardBaseOfABoxGetsMoreSnowThanTheLeeSide) {
+    YardOptions o;
+    o.emitter_rate = 8000.0f;
+    o.max_flakes = 60000;
+    auto sim = make_yard(o); // garage x in [-1, 2], wind +2 m/s along +x
+    Wind steady = sim->world().resource<Wind>();
+    steady.walk = 0.0f; // steady wind
+    sim->set_wind(steady);
+    Entity ground;
+    sim->world().each<SnowSurface, SurfaceOf>(
+        [&](Entity e, const SnowSurface&, const SurfaceOf& of) {
+            if (of.owner.is_null()) {
+                ground = e;
+            }
+        });
+    sim->run(3000);
+    const std::uint64_t windward = strip_units(*sim, ground, -1.5f, -0.9f);
+    const std::uint64_t leeward = strip_units(*sim, ground, 1.9f, 2.5f);
+    EXPECT_GT(windward, 2 * leeward) << "windward " << windward << ", leeward " << leeward;
+    RecordProperty("windward_units", std::to_string(windward));
+    RecordProperty("leeward_units", std::to_string(leeward));
+    EXPECT_TRUE(sim->mass().balanced());
+}
+
+} // namespace
+} // namespace snow

@@ -1,0 +1,142 @@
+// slide: a line of a tilted surface down its slope that holds more than the
+// slide depth on average sheds all its snow over its low edge as one slab
+// (docs/cover_and_bodies.md "Spill and slides"); mass moves exactly.
+#include "systems/api/internal_access.hpp"
+#include "tests/support/rect_surface.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+namespace snow {
+namespace {
+
+/// A roof from x = -1 (high) to 1 (low, slope −0.5) over z in [−1, 1], 10 cm
+/// cells, sliding from a 2 cm mean; a flat porch below its low eave and the
+/// ground under everything.
+struct SlidingRoof {
+    Simulation sim;
+    Entity ground, roof, porch;
+    explicit SlidingRoof(Wind wind = no_wind())
+        : sim([] {
+              SimConfig c;
+              c.bounds = {{-4.0f, -1.0f, -4.0f}, {4.0f, 6.0f, 4.0f}};
+              c.max_flakes = 2048;
+              return c;
+          }()) {
+        sim.set_wind(wind);
+        ground = sim.add_surface(test::rect_surface(-3.0f, -3.0f, 6.0f, 6.0f, 0.0f, false));
+        const Entity box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}});
+        SurfaceDef r = test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 2.5f, true);
+        r.slope_x = -0.5f;
+        r.edge_limit = 0.1f; // high: only slides leave this roof
+        r.slide_depth = 0.02f;
+        roof = sim.add_surface(r, box);
+        porch = sim.add_surface(test::rect_surface(1.0f, -1.0f, 1.5f, 2.0f, 1.0f, false));
+    }
+    static Wind no_wind() {
+        Wind w;
+        w.base = w.current = glm::vec3{0.0f};
+        w.walk = 0.0f;
+        return w;
+    }
+    [[nodiscard]] const SnowSurface& s(Entity e) const { return sim.surface(e); }
+    /// Units giving the roof's line iz a mean depth of `depth` m, spread evenly.
+    void fill_line(std::uint32_t iz, float depth) {
+        const SnowSurface& r = s(roof);
+        const auto units = static_cast<std::uint32_t>(depth / r.unit_height);
+        for (std::uint32_t ix = 0; ix < r.nx; ++ix) {
+            sim.add_settled_snow(roof, ix, iz, units);
+        }
+    }
+    [[nodiscard]] std::uint64_t line_units(std::uint32_t iz) const {
+        const SnowSurface& r = s(roof);
+        std::uint64_t n = 0;
+        for (std::uint32_t ix = 0; ix < r.nx; ++ix) {
+            n += r.snow[r.index(ix, iz)];
+        }
+        return n;
+    }
+};
+
+TEST(Slide, ALineOverTheSlideDepthShedsWholeOntoWhatLiesBelowItsEave) {
+    SlidingRoof y;
+    y.fill_line(5, 0.025f);  // over 2 cm: slides
+    y.fill_line(12, 0.015f); // under: stays
+    const std::uint64_t slab = y.line_units(5), kept = y.line_units(12);
+    for (int t = 0; t < 300; ++t) {
+        y.sim.tick();
+        ASSERT_TRUE(y.sim.mass().balanced()) << "tick " << t;
+    }
+    EXPECT_EQ(y.sim.flakes().alive, 0u) << "the slab has landed";
+    EXPECT_EQ(y.sim.counters().spilled_units, slab);
+    EXPECT_EQ(y.s(y.porch).settled_units(), slab) << "all of it on the porch below the eave";
+    EXPECT_EQ(y.s(y.ground).settled_units(), 0u);
+    EXPECT_EQ(y.s(y.roof).settled_units(), kept) << "the thinner line stays, whole";
+    EXPECT_EQ(y.sim.mass().removed, 0u);
+    // It fell at the eave: the porch's first 30 cm hold most of it.
+    const SnowSurface& p = y.s(y.porch);
+    std::uint64_t near_eave = 0;
+    for (std::uint32_t iz = 0; iz < p.nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < 3; ++ix) {
+            near_eave += p.snow[p.index(ix, iz)];
+        }
+    }
+    EXPECT_GT(near_eave, slab / 2) << near_eave << " of " << slab;
+}
+
+TEST(Slide, TheWindHardlyCarriesTheSlabOffThePorch) {
+    // 2.5 m/s along the eave: a flake falling 1 m/s would drift about a metre
+    // on its way down to the porch, past its end; the slab's packed clumps
+    // fall at 5 m/s and drift about a quarter of that.
+    Wind wind = SlidingRoof::no_wind();
+    wind.base = wind.current = glm::vec3{0.0f, 0.0f, -2.5f};
+    SlidingRoof y(wind);
+    y.fill_line(5, 0.03f); // at z = -0.45, 0.55 m from the porch's end downwind
+    const std::uint64_t slab = y.line_units(5);
+    y.sim.run(300);
+    ASSERT_TRUE(y.sim.mass().balanced());
+    EXPECT_EQ(y.sim.flakes().alive, 0u);
+    EXPECT_EQ(y.s(y.porch).settled_units(), slab);
+}
+
+TEST(Slide, SaveAndRestoreAcrossASlideGiveTheSameState) {
+    SlidingRoof a, b;
+    for (SlidingRoof* y : {&a, &b}) {
+        y->fill_line(3, 0.03f);
+        y->sim.run(2); // mid-fall
+    }
+    const auto snap = b.sim.save();
+    a.sim.run(40);
+    b.sim.run(17);
+    b.sim.restore(*snap);
+    b.sim.run(40);
+    EXPECT_EQ(a.sim.state_hash(), b.sim.state_hash());
+}
+
+TEST(Slide, NeedsATiltedSpillingSurfaceAndANonNegativeDepth) {
+    SimConfig c;
+    c.bounds = {{-4.0f, -1.0f, -4.0f}, {4.0f, 6.0f, 4.0f}};
+    Simulation sim(c);
+    const std::uint64_t before = sim.state_hash();
+    SurfaceDef flat = test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 1.0f, true);
+    flat.slide_depth = 0.02f;
+    SurfaceDef dry = flat;
+    dry.slope_x = 0.5f;
+    dry.spills = false;
+    SurfaceDef negative = flat;
+    negative.slope_x = 0.5f;
+    negative.slide_depth = -0.01f;
+    for (const SurfaceDef& bad : {flat, dry, negative}) {
+        try {
+            (void)sim.add_surface(bad);
+            ADD_FAILURE() << "accepted slide_depth " << bad.slide_depth;
+        } catch (const SimulationError& e) {
+            EXPECT_EQ(e.field(), "surface.slide_depth") << e.what();
+        }
+    }
+    EXPECT_EQ(sim.state_hash(), before) << "nothing was added";
+}
+
+} // namespace
+} // namespace snow
