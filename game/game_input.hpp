@@ -1,7 +1,9 @@
 /// @file game_input.hpp
-/// @brief What the player can do in snow_game, the keys for it, and scripted
-/// key injection (--inject) used by tests and demos.
+/// @brief The keys of snow_game's actions (game/player_actions.hpp), and
+/// scripted key injection (--inject) used by tests and demos.
 #pragma once
+
+#include "game/player_actions.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -10,28 +12,6 @@
 #include <vector>
 
 namespace snow {
-
-/// Keys that act once per press.
-enum class Action : std::uint8_t {
-    pause,         ///< P: pause / resume the simulation
-    step,          ///< N: advance one tick while paused
-    reset,         ///< R: back to the scene's first tick
-    rate_up,       ///< +: more snowfall
-    rate_down,     ///< -: less snowfall
-    wind_left,     ///< left arrow: rotate wind 15° counter-clockwise (seen from above)
-    wind_right,    ///< right arrow: rotate wind 15° clockwise
-    wind_up,       ///< up arrow: stronger wind
-    wind_down,     ///< down arrow: weaker wind
-    toggle_fog,    ///< F: fog on / off
-    toggle_wind,   ///< V: draw the wind field as arrows, on / off
-    quality_next,  ///< Q: next quality preset (reloads the scene)
-    screenshot,    ///< F12 or C: write a PNG
-    next_camera,   ///< O: walk -> fly -> orbit camera
-    time_scale,    ///< T: simulated time per frame x1, x4, x16, x64
-    push_snowball, ///< B: push the snowball ahead (make one if there is none)
-    toggle_help,   ///< H: show / hide the key list
-    quit,          ///< Esc
-};
 
 /// Keys that act while held: walking (walk camera) or flying (fly camera).
 enum class MoveKey : std::uint8_t { forward, back, left, right };

@@ -1,6 +1,7 @@
 #include "game/hud.hpp"
 
 #include "game/game_input.hpp"
+#include "game/hud_info.hpp"
 #include "systems/core/units.hpp"
 
 #include <backends/imgui_impl_glfw.h>
@@ -28,7 +29,9 @@ bool Hud::wants_mouse() const {
     return ImGui::GetIO().WantCaptureMouse;
 }
 
-void Hud::draw(const Simulation& sim, const FrameTimings& frame, const HudInfo& info) {
+void Hud::draw(const GameSession& session, const FrameTimings& frame, float fps) {
+    const Simulation& sim = session.sim();
+    const HudInfo info = hud_info(session, fps);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

@@ -1,6 +1,7 @@
 // snow_game: the playable snow scene (window), or a headless render to PNGs.
 #include "game/cli_args.hpp"
 #include "game/game_app.hpp"
+#include "game/game_options.hpp"
 #include "game/quality.hpp"
 #include "game/time_scale.hpp"
 

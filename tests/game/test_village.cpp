@@ -80,7 +80,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
 }
 
 /// The time-lapse's storm: the village with 40 000 flakes/s at 30 ticks a
-/// second, blowing 2.5 m/s from the south (game_app.cpp, apply_timelapse).
+/// second, blowing 2.5 m/s from the south (game_options.cpp, apply_timelapse).
 std::unique_ptr<Simulation> village_in_a_south_storm() {
     SceneOverrides o;
     o.wind = glm::vec3{0.0f, 0.0f, -2.5f};
