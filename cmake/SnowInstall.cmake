@@ -134,3 +134,28 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/snowConfigVersion.cmake
     COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/snowConfig.cmake ${PROJECT_BINARY_DIR}/snowConfigVersion.cmake
     DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)
+
+# Every installed header compiles alone, as the first include of a
+# consumer's file (<snow/snow.h> as C11): one generated source per header,
+# built with the project's warnings as part of the tests' build.
+if(SNOW_BUILD_TESTS)
+    set(header_checks)
+    foreach(header ${SNOW_INSTALLED_HEADERS})
+        string(MAKE_C_IDENTIFIER ${header} name)
+        set(ext cpp)
+        if(header MATCHES "\\.h$")
+            set(ext c)
+        endif()
+        string(REGEX REPLACE "^include/" "" included ${header})
+        set(check ${PROJECT_BINARY_DIR}/header_check/${name}.${ext})
+        file(CONFIGURE OUTPUT ${check} CONTENT "#include \"${included}\"\n")
+        list(APPEND header_checks ${check})
+    endforeach()
+    add_library(snow_header_check OBJECT ${header_checks})
+    set_target_properties(snow_header_check PROPERTIES C_STANDARD 11 C_STANDARD_REQUIRED ON)
+    target_include_directories(snow_header_check PRIVATE ${PROJECT_SOURCE_DIR}/include
+                                                         ${PROJECT_SOURCE_DIR})
+    target_link_libraries(snow_header_check PRIVATE glm::glm)
+    snow_set_options(snow_header_check)
+    snow_require_sized_deallocation(snow_header_check)
+endif()

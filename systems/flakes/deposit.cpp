@@ -70,9 +70,9 @@ struct DepositTick {
 
 namespace {
 
-/// See DepositTick::sparse: in the yard benchmark about 1 slot in 140
-/// passes the bin test and sharing saves 5–7 % of a tick; in the village
-/// about 1 in 7 does and sharing cost 20 % (docs/performance.md).
+/// See DepositTick::sparse: sharing pays where few slots pass the bin test
+/// (the yard benchmark) and costs where many do (the village); the counts
+/// and times are in docs/performance.md.
 constexpr std::uint64_t sparse_share = 50;
 
 /// [ZCL §IV] deposition rules for snow arriving on cell c: no lower

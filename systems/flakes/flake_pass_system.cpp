@@ -11,8 +11,7 @@
 // slots instead of the whole block. Deposit's exact tests of a block wait
 // until the next block has been integrated and collided: the surface cells
 // under its few low flakes are scattered and rarely in cache, and their
-// loads, started when the block was listed, have arrived by then (1M-flake
-// yard: the pass 5 % faster on one thread).
+// loads, started when the block was listed, have arrived by then.
 #include "systems/api/systems.hpp"
 #include "systems/core/jobs.hpp"
 #include "systems/flakes/flake_pool.hpp"

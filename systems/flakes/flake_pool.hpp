@@ -25,8 +25,7 @@ void free_pool_array(void* p, std::size_t bytes) noexcept;
 /// flake_grain slots never share a line with their neighbours. An array of
 /// 2 MiB or more is laid on whole 2 MiB pages and offered to the kernel as
 /// huge pages (Linux; a hint): a pass streams a dozen such arrays at once,
-/// and on 4 KiB pages every 4 KiB of each costs a TLB miss (1M-flake yard,
-/// per-system timer: the flake pass 2-5 % faster).
+/// and on 4 KiB pages every 4 KiB of each costs a TLB miss.
 template <typename T>
 struct CacheAligned {
     using value_type = T;

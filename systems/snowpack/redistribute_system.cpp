@@ -345,9 +345,9 @@ void flag_rows(World& w, const SnowSurface& s, const Box& b, std::uint8_t* flags
     }
     const std::uint32_t rows = z1 - z0 + 1;
     // In the units of for_tasks' threshold (a flake slot of a pass): a
-    // scanned cell reads five cells' levels, about two slots' work (the 1M
-    // yard's scan of ~200k cells runs faster on two cores: BM_SimTick 1M/2t
-    // 2 - 3 % less time per tick; small boxes stay on one).
+    // scanned cell reads five cells' levels, about two slots' work, so large
+    // boxes share the scan and small ones stay on one core
+    // (docs/performance.md "Measurements the code relies on").
     for_tasks(w, 2, 2 * b.cells(), [&](std::size_t half) {
         const std::uint32_t first = z0 + static_cast<std::uint32_t>(half * rows / 2);
         const std::uint32_t last = z0 + static_cast<std::uint32_t>((half + 1) * rows / 2);
@@ -411,8 +411,7 @@ void visit_box(TileGrid& g, const L& lv, const Box& b) {
 
 /// Boxes ahead of the one visited whose cells are prefetched: scattered
 /// landings' boxes lie far apart in a surface larger than the cache, and
-/// the flake pass has just streamed the pool through it (1M-flake yard:
-/// redistribution 0.19 -> 0.13 ms per tick).
+/// the flake pass has just streamed the pool through it.
 constexpr std::size_t prefetch_ahead = 4;
 
 /// One Jacobi step over the boxes wanted by the previous step.
