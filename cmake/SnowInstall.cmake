@@ -14,7 +14,7 @@ include(CMakePackageConfigHelpers)
 # visible change here; snow_check_header_closure() fails the configure step
 # when an include was added or dropped without updating these lists.
 set(SNOW_SIM_HEADERS
-    include/snow/snow.hpp include/snow/task_system.hpp
+    include/snow/snow.hpp include/snow/defs.hpp include/snow/task_system.hpp
     ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
     ecs/world.hpp
     systems/api/fixed_step.hpp systems/api/fog.hpp systems/api/simulation.hpp

@@ -11,4 +11,5 @@
 #include "systems/api/simulation.hpp"
 #include "systems/core/units.hpp"
 
+#include <snow/defs.hpp>
 #include <snow/task_system.hpp>

@@ -14,39 +14,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <snow/defs.hpp>
+
 namespace snow {
-
-enum class BodyShape : std::uint8_t { sphere, box, capsule };
-
-/// A scripted path: the body moves along the waypoints at `speed`.
-struct BodyMotion {
-    std::vector<glm::vec3> waypoints; ///< empty: no path
-    float speed = 1.0f;               ///< m/s along the path
-    bool loop = true;                 ///< back to the first waypoint after the last; else stop
-};
-
-/// Settings to create a body; see Simulation::add_body().
-struct BodyDef {
-    BodyShape shape = BodyShape::sphere;
-    glm::vec3 position{0.0f};      ///< centre (m)
-    float radius = 0.25f;          ///< sphere and capsule radius (m)
-    glm::vec3 half_extents{0.25f}; ///< box half size (m)
-    float half_height = 0.5f;      ///< capsule: half length of its vertical core segment (m)
-    /// Each tick its lowest point is put on the bare ground (surface or
-    /// cover base) under its centre, as a walker or a rolling ball: the
-    /// highest within its radius above where its feet were (it steps up that
-    /// far and passes under a roof), else the lowest (it climbs out); else
-    /// its height is its own (path or host).
-    bool on_ground = false;
-    /// Picks up the snow it rolls over instead of pushing it aside; its
-    /// radius grows with what it carries (packed snow).
-    bool snowball = false;
-    /// Fraction in [0, 1] of the snow in its way that it packs down under it
-    /// instead of pushing it aside (a boot, a tyre): the same units stand
-    /// lower, at up to packed_snow_density. 0 pushes it all into the rims.
-    float compaction = 0.0f;
-    BodyMotion motion;
-};
 
 /// Component. `position` is this tick's, `previous` last tick's: trails and
 /// flake tests sweep between them.

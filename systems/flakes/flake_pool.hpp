@@ -13,6 +13,8 @@
 #include <limits>
 #include <vector>
 
+#include <snow/defs.hpp>
+
 namespace snow {
 
 /// Storage for CacheAligned: `bytes` on a cache line, or on whole 2 MiB
@@ -121,16 +123,6 @@ void save_state(ByteWriter& out, const FlakePool& f);
 /// Reads a record of save_state into `f`, a pool of the capacity it was
 /// saved with (throws SimulationError naming what is wrong otherwise).
 void load_state(ByteReader& in, FlakePool& f);
-
-/// One airborne flake placed by hand (Simulation::place_flake): tests,
-/// benchmarks at a fixed load, or an embedder's own emitter.
-struct FlakeSpec {
-    glm::vec3 position{0.0f};
-    glm::vec3 velocity{0.0f};
-    float k_over_m = 9.81f;       ///< drag over mass (1/s); 9.81 falls at 1 m/s in still air
-    float size = 0.01f;           ///< diameter (m), for rendering
-    std::uint32_t mass_units = 1; ///< 1 .. max_flake_units
-};
 
 /// `flake.*`: one flake placed by hand.
 inline constexpr FieldRule<FlakeSpec> flake_fields[] = {

@@ -15,14 +15,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace snow {
+#include <snow/defs.hpp>
 
-/// World resource: settings. Without it, no occlusion system runs.
-struct OcclusionCamera {
-    /// Texels per side over the simulation bounds (at most max_occlusion_resolution).
-    std::uint32_t resolution = 256;
-    float tilt = 0.0f; ///< radians; projection leans along the wind (|tilt| <= max_occlusion_tilt)
-};
+namespace snow {
 
 /// OcclusionMap::wind_angle when the projection does not lean (no tilt, no wind, calm).
 inline constexpr float occlusion_no_lean = -1.0f;

@@ -14,20 +14,11 @@
 #include <cstdint>
 #include <vector>
 
+#include <snow/defs.hpp>
+
 namespace snow {
 
 struct SnowSurface;
-
-/// Settings to create a cover; see Simulation::add_cover().
-struct CoverDef {
-    float min_x = -1.0f, min_z = -1.0f; ///< world rectangle the cover spans (m)
-    float max_x = 1.0f, max_z = 1.0f;
-    float cell = 0.1f;        ///< cell edge (m)
-    float edge_limit = 0.02f; ///< snow depth (m) at a drop above which the excess spills
-    float drop_limit = 0.15f; ///< a base step (m) larger than this between neighbours is an edge
-    float laplacian_limit = 20.0f; ///< cap on |∇²h| of the total height (1/m), [WF §3]
-    float repose_deg = 40.0f;      ///< snow on steeper total slopes slides down (degrees)
-};
 
 /// Component beside the SnowSurface of a cover entity: what its base was
 /// built from and the cells at drops, where spill looks.

@@ -17,24 +17,9 @@
 #include <limits>
 #include <vector>
 
-namespace snow {
+#include <snow/defs.hpp>
 
-/// Settings to create a surface; see make_surface().
-struct SurfaceDef {
-    float x0 = 0.0f, z0 = 0.0f;         ///< world position of the grid corner (min x, min z)
-    float size_x = 1.0f, size_z = 1.0f; ///< extent (m)
-    float cell = 0.05f;                 ///< cell edge (m)
-    float base_y = 0.0f;                ///< height of the bare top for a flat surface (m)
-    float slope_x = 0.0f;               ///< d(base)/dx, for tilted tops (m/m)
-    float slope_z = 0.0f;               ///< d(base)/dz
-    float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
-    bool spills = true;                 ///< false for the ground: its edges keep their snow
-    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
-    /// Tilted tops: a line of cells down the slope that holds more than this
-    /// mean depth (m) slides off its low edge as one slab (a roof shedding
-    /// its snow); 0 = it never slides. Needs a slope and spills.
-    float slide_depth = 0.0f;
-};
+namespace snow {
 
 /// Dirty cells are tracked per tile of 2^dirty_tile_shift cells on a side,
 /// so redistribution works where snow changed, whatever the surface's size.

@@ -21,16 +21,9 @@
 #include <string>
 #include <vector>
 
-namespace snow {
+#include <snow/defs.hpp>
 
-/// Settings to declare a field; see Simulation::set_wind_field().
-struct WindFieldDef {
-    std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
-    std::uint32_t update_every = 4;                         ///< ticks between solver steps
-    std::uint32_t sample_every = 32;       ///< ticks between a flake's samples (held_wind.hpp)
-    std::uint32_t pressure_iterations = 8; ///< red-black SOR sweeps per step (fixed)
-    float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
-};
+namespace snow {
 
 /// One array of the staggered grid and how to read it. Storage is x fastest;
 /// an axis the samples sit at cell centres of has one ghost layer on each

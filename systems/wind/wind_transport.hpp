@@ -9,22 +9,9 @@
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 
-namespace snow {
+#include <snow/defs.hpp>
 
-/// Settings of the transport; see Simulation::set_wind_transport().
-struct WindTransportDef {
-    /// Horizontal wind speed (m/s) below which snow stays put. Dry, loose
-    /// snow starts to drift at about 4–5 m/s measured a little above it.
-    float threshold = 5.0f;
-    /// Fraction of a cell's snow that leaves per second per m/s of wind above
-    /// the threshold (1/(m/s·s)).
-    float rate = 0.02f;
-    /// Most of a cell's snow that leaves in one field step (0..1]: keeps a
-    /// gale from emptying cells faster than the step resolves.
-    float max_fraction = 0.25f;
-    /// Height (m) above the snow top at which the wind is read.
-    float height = 0.25f;
-};
+namespace snow {
 
 /// `wind.field.transport.*`.
 inline constexpr FieldRule<WindTransportDef> wind_transport_fields[] = {

@@ -1,0 +1,183 @@
+/// @file defs.hpp
+/// @brief The settings a host gives the simulation (Box2D's def structs):
+/// plain values with defaults, checked by the Simulation call that takes
+/// them (a bad value throws snow::SimulationError naming its field).
+/// Self-contained: the standard library and GLM only.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include <snow/task_system.hpp>
+
+namespace snow {
+
+/// Axis-aligned box, min <= max on every axis.
+struct Aabb {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    [[nodiscard]] bool contains(const glm::vec3& p) const {
+        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && p.z >= min.z &&
+               p.z <= max.z;
+    }
+    [[nodiscard]] glm::vec3 size() const { return max - min; }
+};
+
+/// How flakes move each tick (docs/design.md "Numerical stability").
+enum class Integrator : std::uint8_t {
+    explicit_euler,      ///< v += a·dt, p += v·dt ([WF], [ZCL]); guarded when stiff
+    semi_implicit_euler, ///< implicit drag, then p += v_new·dt (never overshoots)
+    exponential,         ///< exact update for gravity + linear drag to constant wind
+    rk4,                 ///< classical Runge-Kutta, the accuracy reference
+    automatic,           ///< explicit Euler where k·dt/m <= 0.5, exponential elsewhere
+};
+
+/// The simulation's settings, fixed at creation (the integrator may change).
+struct SimConfig {
+    std::uint64_t seed = 1;
+    float dt = 1.0f / 60.0f;               ///< fixed tick length (s)
+    glm::vec3 gravity{0.0f, -9.81f, 0.0f}; ///< m/s^2
+    Integrator integrator = Integrator::explicit_euler;
+    Aabb bounds{{-10.0f, -1.0f, -10.0f}, {10.0f, 12.0f, 10.0f}}; ///< flakes leaving it are removed
+    std::uint32_t max_flakes = 50000;
+    /// Threads of the built-in pool (the caller is one of them); ignored
+    /// when the host gives its own task_system.
+    unsigned threads = 1;
+    /// The host's task system (not owned; it must outlive the Simulation).
+    /// Null: the built-in pool. Results are the same either way.
+    TaskSystem* task_system = nullptr;
+    /// Smoothing sub-iterations per surface per tick [WF §3]; a pile still
+    /// moving after that many continues next tick.
+    std::uint32_t smoothing_iterations = 64;
+};
+
+/// Component. Flakes appear on the top and the upwind sides of the
+/// simulation bounds [WF §5], with mass and size drawn uniformly.
+struct Emitter {
+    float rate = 2000.0f;        ///< expected flakes per second
+    float mass_min_g = 0.005f;   ///< [WF §3]: 0.005 g ..
+    float mass_max_g = 5.0f;     ///< .. 5 g
+    float size_min = 0.002f;     ///< diameter (m)
+    float size_max = 0.0254f;    ///< [WF §3]: common 0.0254 m
+    float fall_speed_min = 0.5f; ///< terminal speed in still air (m/s); sets k/m = g / v
+    float fall_speed_max = 1.5f;
+};
+
+/// One airborne flake placed by hand (Simulation::place_flake): tests,
+/// benchmarks at a fixed load, or an embedder's own emitter.
+struct FlakeSpec {
+    glm::vec3 position{0.0f};
+    glm::vec3 velocity{0.0f};
+    float k_over_m = 9.81f;       ///< drag over mass (1/s); 9.81 falls at 1 m/s in still air
+    float size = 0.01f;           ///< diameter (m), for rendering
+    std::uint32_t mass_units = 1; ///< 1 .. max_flake_units
+};
+
+/// World resource. Without it there is no wind system and air is still.
+struct Wind {
+    glm::vec3 base{2.0f, 0.0f, 0.0f};    ///< mean wind (m/s)
+    glm::vec3 current{2.0f, 0.0f, 0.0f}; ///< this tick's wind (state)
+    glm::vec3 deviation{0.0f};           ///< state: random-walk offset from base
+    float walk = 0.2f;                   ///< random-walk step size (m/s per sqrt(s))
+    float max_deviation = 1.0f;          ///< |current - base| stays below this (m/s)
+    float gust_strength = 0.0f;          ///< extra speed of a gust along base (m/s)
+    float gust_rate = 0.0f;              ///< gusts started per second
+    float gust_duration = 1.5f;          ///< seconds
+    float gust_left = 0.0f;              ///< state: seconds of the running gust
+};
+
+/// Settings to declare a field; see Simulation::set_wind_field().
+struct WindFieldDef {
+    std::uint32_t cells_x = 64, cells_y = 16, cells_z = 64; ///< grid over SimConfig::bounds
+    std::uint32_t update_every = 4;                         ///< ticks between solver steps
+    std::uint32_t sample_every = 32;       ///< ticks between a flake's samples (held_wind.hpp)
+    std::uint32_t pressure_iterations = 8; ///< red-black SOR sweeps per step (fixed)
+    float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
+};
+
+/// Settings of the transport; see Simulation::set_wind_transport().
+struct WindTransportDef {
+    /// Horizontal wind speed (m/s) below which snow stays put. Dry, loose
+    /// snow starts to drift at about 4–5 m/s measured a little above it.
+    float threshold = 5.0f;
+    /// Fraction of a cell's snow that leaves per second per m/s of wind above
+    /// the threshold (1/(m/s·s)).
+    float rate = 0.02f;
+    /// Most of a cell's snow that leaves in one field step (0..1]: keeps a
+    /// gale from emptying cells faster than the step resolves.
+    float max_fraction = 0.25f;
+    /// Height (m) above the snow top at which the wind is read.
+    float height = 0.25f;
+};
+
+/// Settings to create a surface; see make_surface().
+struct SurfaceDef {
+    float x0 = 0.0f, z0 = 0.0f;         ///< world position of the grid corner (min x, min z)
+    float size_x = 1.0f, size_z = 1.0f; ///< extent (m)
+    float cell = 0.05f;                 ///< cell edge (m)
+    float base_y = 0.0f;                ///< height of the bare top for a flat surface (m)
+    float slope_x = 0.0f;               ///< d(base)/dx, for tilted tops (m/m)
+    float slope_z = 0.0f;               ///< d(base)/dz
+    float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
+    bool spills = true;                 ///< false for the ground: its edges keep their snow
+    float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
+    /// Tilted tops: a line of cells down the slope that holds more than this
+    /// mean depth (m) slides off its low edge as one slab (a roof shedding
+    /// its snow); 0 = it never slides. Needs a slope and spills.
+    float slide_depth = 0.0f;
+};
+
+/// Settings to create a cover; see Simulation::add_cover().
+struct CoverDef {
+    float min_x = -1.0f, min_z = -1.0f; ///< world rectangle the cover spans (m)
+    float max_x = 1.0f, max_z = 1.0f;
+    float cell = 0.1f;        ///< cell edge (m)
+    float edge_limit = 0.02f; ///< snow depth (m) at a drop above which the excess spills
+    float drop_limit = 0.15f; ///< a base step (m) larger than this between neighbours is an edge
+    float laplacian_limit = 20.0f; ///< cap on |∇²h| of the total height (1/m), [WF §3]
+    float repose_deg = 40.0f;      ///< snow on steeper total slopes slides down (degrees)
+};
+
+/// The shape of a moving body.
+enum class BodyShape : std::uint8_t { sphere, box, capsule };
+
+/// A scripted path: the body moves along the waypoints at `speed`.
+struct BodyMotion {
+    std::vector<glm::vec3> waypoints; ///< empty: no path
+    float speed = 1.0f;               ///< m/s along the path
+    bool loop = true;                 ///< back to the first waypoint after the last; else stop
+};
+
+/// Settings to create a body; see Simulation::add_body().
+struct BodyDef {
+    BodyShape shape = BodyShape::sphere;
+    glm::vec3 position{0.0f};      ///< centre (m)
+    float radius = 0.25f;          ///< sphere and capsule radius (m)
+    glm::vec3 half_extents{0.25f}; ///< box half size (m)
+    float half_height = 0.5f;      ///< capsule: half length of its vertical core segment (m)
+    /// Each tick its lowest point is put on the bare ground (surface or
+    /// cover base) under its centre, as a walker or a rolling ball: the
+    /// highest within its radius above where its feet were (it steps up that
+    /// far and passes under a roof), else the lowest (it climbs out); else
+    /// its height is its own (path or host).
+    bool on_ground = false;
+    /// Picks up the snow it rolls over instead of pushing it aside; its
+    /// radius grows with what it carries (packed snow).
+    bool snowball = false;
+    /// Fraction in [0, 1] of the snow in its way that it packs down under it
+    /// instead of pushing it aside (a boot, a tyre): the same units stand
+    /// lower, at up to packed_snow_density. 0 pushes it all into the rims.
+    float compaction = 0.0f;
+    BodyMotion motion;
+};
+
+/// World resource: settings. Without it, no occlusion system runs.
+struct OcclusionCamera {
+    /// Texels per side over the simulation bounds (at most max_occlusion_resolution).
+    std::uint32_t resolution = 256;
+    float tilt = 0.0f; ///< radians; projection leans along the wind (|tilt| <= max_occlusion_tilt)
+};
+
+} // namespace snow
