@@ -35,7 +35,8 @@ set(SNOW_RENDER_HEADERS
     include/snow/render.hpp
     render/camera.hpp render/frame_timings.hpp render/image.hpp render/render_error.hpp
     render/render_settings.hpp render/renderer.hpp render/scene_visuals.hpp
-    render/context/gl_context.hpp render/context/glfw_context.hpp
+    render/context/context_request.hpp render/context/gl_context.hpp
+    render/context/glfw_context.hpp render/context/make_context.hpp
     render/context/osmesa_context.hpp
     render/gl/shader.hpp
     render/passes/render_pass.hpp)

@@ -8,6 +8,7 @@
 #include "render/camera.hpp"
 #include "render/context/gl_context.hpp"
 #include "render/context/glfw_context.hpp"
+#include "render/context/make_context.hpp"
 #include "render/context/osmesa_context.hpp"
 #include "render/image.hpp"
 #include "render/render_error.hpp"

@@ -1,13 +1,11 @@
 /// @file gl_context.hpp
 /// @brief One interface over the GL context backends (OSMesa or EGL headless,
-/// GLFW window) and the factory that picks one, falling back to headless.
+/// GLFW window). It knows none of them: make_context.hpp picks one.
 #pragma once
 
 #include <glm/vec2.hpp>
 
 #include <cstdint>
-#include <memory>
-#include <string>
 #include <string_view>
 
 namespace snow {
@@ -49,29 +47,5 @@ class GlContext {
   private:
     std::uint64_t serial_; ///< unique per context, so a reused address never skips a reload
 };
-
-enum class ContextBackend : std::uint8_t {
-    automatic, ///< a window if a display is usable, else headless (prints why)
-    headless,  ///< OSMesa, no display needed
-    window,    ///< GLFW; throws RenderError if no window can be made
-    egl,       ///< EGL surfaceless (Mesa), no display needed; throws if unavailable
-};
-
-/// What make_context() should create.
-struct ContextRequest {
-    ContextBackend backend = ContextBackend::automatic;
-    int width = 640;
-    int height = 480;
-    std::string title = "snow";
-    bool visible = true; ///< window backend: false for an offscreen window
-    bool vsync = true;   ///< window backend: swap interval 1
-    bool quiet = false;  ///< automatic: do not print the fallback reason to stderr
-};
-
-/// Creates a context (already current, GL loaded). With `automatic`, a window
-/// that cannot be made falls back to headless; the reason goes to stderr and to
-/// `fallback_reason` (left empty when no fallback happened).
-[[nodiscard]] std::unique_ptr<GlContext> make_context(const ContextRequest& request,
-                                                      std::string* fallback_reason = nullptr);
 
 } // namespace snow

@@ -2,6 +2,7 @@
 // back, switching contexts, and a GLFW window under Xvfb.
 #include "render/context/gl_context.hpp"
 #include "render/context/glfw_context.hpp"
+#include "render/context/make_context.hpp"
 #include "render/render_error.hpp"
 #include "render/renderer.hpp"
 #include "tests/render/render_fixture.hpp"
