@@ -7,7 +7,7 @@
 
 #include "bench_scene.hpp"
 
-#include "render/flake_selection.hpp"
+#include "render/passes/flake_selection.hpp"
 
 #include <snow/render.hpp>
 

@@ -33,9 +33,13 @@ set(SNOW_SCENE_HEADERS
     game/scene/scene_loader.hpp render/scene_visuals.hpp)
 set(SNOW_RENDER_HEADERS
     include/snow/render.hpp
-    render/camera.hpp render/frame_timings.hpp render/gl_context.hpp render/glfw_context.hpp
-    render/image.hpp render/osmesa_context.hpp render/render_error.hpp render/render_pass.hpp
-    render/render_settings.hpp render/renderer.hpp render/scene_visuals.hpp render/shader.hpp)
+    render/camera.hpp render/frame_timings.hpp render/image.hpp render/render_error.hpp
+    render/render_settings.hpp render/renderer.hpp render/scene_visuals.hpp
+    render/context/context_request.hpp render/context/gl_context.hpp
+    render/context/glfw_context.hpp render/context/make_context.hpp
+    render/context/osmesa_context.hpp
+    render/gl/shader.hpp
+    render/passes/render_pass.hpp)
 
 # Every header reachable from `root` through #include "dir/file.hpp" (paths
 # from the source root) and #include <snow/file.hpp>.

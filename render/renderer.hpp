@@ -6,10 +6,10 @@
 
 #include "ecs/world.hpp"
 #include "render/camera.hpp"
+#include "render/context/gl_context.hpp"
 #include "render/frame_timings.hpp"
-#include "render/gl_context.hpp"
 #include "render/image.hpp"
-#include "render/render_pass.hpp"
+#include "render/passes/render_pass.hpp"
 #include "render/render_settings.hpp"
 #include "render/scene_visuals.hpp"
 

@@ -1,6 +1,6 @@
 // common.glsl: prepended to every stage after "#version" and the variant
 // #defines (FOG + one of FOG_EXPONENTIAL / FOG_HALF_LIFE / FOG_LAYERED,
-// OCCLUSION). Mirrors render/frame_block.hpp (std140).
+// OCCLUSION). Mirrors render/gl/frame_block.hpp (std140).
 
 layout(std140) uniform Frame {
     mat4 view_proj;

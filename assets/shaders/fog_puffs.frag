@@ -1,5 +1,5 @@
 // fog_puffs.frag: Gaussian and Gabor fog puffs of [PE] with analytic line
-// integrals: render/fog_puffs.cpp's formulas in float. Drawn with sky.vert over
+// integrals: render/passes/fog_puffs.cpp's formulas in float. Drawn with sky.vert over
 // the finished frame: transparency 0.5^(optical depth eye → surface).
 // PUFF_PROBE: one fragment per test segment instead (shader_puff_optical_depths).
 out vec4 frag_color;
@@ -23,7 +23,7 @@ float puff_sinc(float u) {
 }
 
 // e^(−y²)·erf(x + iy), Abramowitz & Stegun 7.1.29 with e^(−y²) folded into
-// every term so none overflows (render/fog_puffs.cpp scaled_complex_erf). The
+// every term so none overflows (render/passes/fog_puffs.cpp scaled_complex_erf). The
 // series' exponentials come from two geometric recurrences, not one exp each.
 vec2 puff_erf_scaled(float x, float y_signed) {
     float y = abs(y_signed); // F(x, −y) = conj(F(x, y))

@@ -16,7 +16,7 @@ void main() {
     vec3 dir = ray / max(d, 1e-6);
     // The share of the snow in front of the surface behind the pixel that the
     // flakes no longer draw: beyond h they are kept with probability (h/d)²
-    // (render/far_field.hpp), so 1 − (h/d)², continuous in d: no seam where
+    // (render/passes/far_field.hpp), so 1 − (h/d)², continuous in d: no seam where
     // the layer starts nor at the horizon. Faded toward zenith and nadir,
     // where azimuth degenerates.
     float kept = spectral_fade.x / max(d, spectral_fade.x);

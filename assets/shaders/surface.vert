@@ -3,7 +3,7 @@
 // sample (id % side, id / side), n + id its copy hung a little below the bare
 // top (tile seams; on the grid's border exactly to it, facing out), 2n + id
 // its copy hung to the bare top (the cut where the bare top jumps like an
-// edge; render/surface_tiles.hpp). Heights come from the cell texture, so a
+// edge; render/passes/surface_tiles.hpp). Heights come from the cell texture, so a
 // changed tile re-uploads only its texels.
 layout(location = 0) in ivec2 a_tile; // per instance: the tile's first cell (x, z)
 uniform sampler2D surface_cells;      // per cell: r = snow top, g = bare top (m)
@@ -18,7 +18,7 @@ out float v_depth; // snow depth (m), faded out per fragment as it thins to noth
 // A bare top rising faster than this between two samples is an edge (eaves, a
 // box's rim, a sphere's side), not a slope: normals and the seam skirts' depth
 // do not difference across it, and the renderer leaves out the quads that
-// bridge it. Equal to surface_edge_slope (render/surface_tiles.hpp).
+// bridge it. Equal to surface_edge_slope (render/passes/surface_tiles.hpp).
 const float edge_slope = 2.0;
 
 vec2 cell(ivec2 c) {

@@ -6,10 +6,11 @@
 #pragma once
 
 #include "render/camera.hpp"
-#include "render/gl_context.hpp"
-#include "render/glfw_context.hpp"
+#include "render/context/gl_context.hpp"
+#include "render/context/glfw_context.hpp"
+#include "render/context/make_context.hpp"
+#include "render/context/osmesa_context.hpp"
 #include "render/image.hpp"
-#include "render/osmesa_context.hpp"
 #include "render/render_error.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_visuals.hpp"

@@ -6,8 +6,8 @@
 
 #include "ecs/world.hpp"
 #include "render/camera.hpp"
+#include "render/context/osmesa_context.hpp"
 #include "render/image.hpp"
-#include "render/osmesa_context.hpp"
 #include "render/render_settings.hpp"
 #include "render/scene_visuals.hpp"
 #include "systems/api/fog.hpp"
