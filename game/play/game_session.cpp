@@ -214,16 +214,7 @@ void GameSession::apply(Action a, const PlayerActions& actions, std::uint64_t fr
         }
         break;
     case Action::reset:
-        sim_->restore(*start_);
-        if (walker_ && walker_->alive(*sim_)) {
-            walker_->restart(*sim_);
-        } else {
-            walker_.reset(); // it was added after the snapshot
-            if (camera_->mode() == CameraMode::walk) {
-                ensure_walker();
-            }
-        }
-        say("reset to tick " + std::to_string(sim_->tick_count()));
+        reset_to_start();
         break;
     case Action::rate_up:
     case Action::rate_down:
@@ -287,6 +278,35 @@ void GameSession::apply(Action a, const PlayerActions& actions, std::uint64_t fr
         quit_ = true;
         break;
     }
+}
+
+void GameSession::reset_to_start() {
+    added_bodies_.clear();
+    sim_->world().each<Body>([&](Entity e, const Body&) {
+        const auto saved = std::find_if(start_->bodies.begin(), start_->bodies.end(),
+                                        [e](const auto& body) { return body.first == e; });
+        if (saved == start_->bodies.end()) {
+            added_bodies_.push_back(e);
+        }
+    });
+    for (const Entity e : added_bodies_) {
+        sim_->remove(e);
+    }
+    try {
+        sim_->restore(*start_);
+    } catch (const SimulationError& e) { // restore changed nothing; the game goes on
+        say(std::string("cannot reset: ") + e.what());
+        return;
+    }
+    if (walker_ && walker_->alive(*sim_)) {
+        walker_->restart(*sim_);
+    } else {
+        walker_.reset(); // it was added after the start
+        if (camera_->mode() == CameraMode::walk) {
+            ensure_walker();
+        }
+    }
+    say("reset to tick " + std::to_string(sim_->tick_count()));
 }
 
 void GameSession::look(const PlayerActions& actions, float seconds) {

@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace snow {
 
@@ -69,6 +70,10 @@ class GameSession {
 
     [[nodiscard]] bool load();
     void apply(Action a, const PlayerActions& actions, std::uint64_t frame);
+    /// R: back to the start state. The bodies added since the start (the
+    /// snowball B makes, a player made when the walk camera came later) are
+    /// removed first: the start holds only the bodies it was saved with.
+    void reset_to_start();
     void next_camera();
     void change_snowfall(float factor);
     void change_wind(Action a);
@@ -92,6 +97,7 @@ class GameSession {
     SceneVisuals visuals_;
     FixedStep step_{1.0 / 60.0}; ///< window frames; load() sets it to the scene's dt
     std::unique_ptr<Snapshot> start_;
+    std::vector<Entity> added_bodies_; ///< reset_to_start's list, kept to reuse its memory
     std::uint64_t start_tick_ = 0;
     std::optional<Fog> fog_; ///< the scene's fog, kept while toggled off
     std::optional<CameraController> camera_;

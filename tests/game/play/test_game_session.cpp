@@ -148,6 +148,54 @@ TEST(GameSession, ResetRestoresTheSavedState) {
     EXPECT_EQ(g.session->message(), "reset to tick " + std::to_string(start_tick));
 }
 
+TEST(GameSession, ResetAfterASnowballGoesOnFromTheStart) {
+    // B adds the snowball's body after the start was saved; R once stopped
+    // the game there ("snapshot belongs to a different scene (body count)").
+    GamePlay g(quick_game(), "0:B,3:P,4:R,5:P");
+    const std::uint64_t start_tick = g.sim().tick_count();
+    const MassReport start_mass = g.sim().mass();
+    const std::size_t start_bodies = g.sim().world().count<Body>();
+    const glm::vec3 start = player_position(g);
+    g.play();
+    EXPECT_EQ(g.session->message().rfind("snowball made ahead", 0), 0u) << g.session->message();
+    EXPECT_EQ(g.sim().world().count<Body>(), start_bodies + 1);
+    g.play(3); // on to P: the snowball rolls with the world for three ticks
+    EXPECT_EQ(g.sim().tick_count(), start_tick + 3);
+    g.play(); // R, while paused: no tick after it
+    EXPECT_FALSE(g.session->quit());
+    EXPECT_EQ(g.session->message(), "reset to tick " + std::to_string(start_tick));
+    EXPECT_EQ(g.sim().tick_count(), start_tick);
+    EXPECT_EQ(g.sim().world().count<Body>(), start_bodies) << "the snowball is gone";
+    const MassReport mass = g.sim().mass();
+    EXPECT_EQ(mass.spawned, start_mass.spawned);
+    EXPECT_EQ(mass.airborne, start_mass.airborne);
+    EXPECT_EQ(mass.settled, start_mass.settled);
+    EXPECT_EQ(mass.carried, start_mass.carried);
+    EXPECT_EQ(mass.removed, start_mass.removed);
+    EXPECT_EQ(player_position(g), start);
+    g.play(); // P again: the session goes on from the start
+    EXPECT_FALSE(g.session->paused());
+    EXPECT_EQ(g.sim().tick_count(), start_tick + 1);
+    EXPECT_TRUE(g.sim().mass().balanced());
+}
+
+TEST(GameSession, ResetAfterTheWalkCameraCameLaterKeepsAPlayer) {
+    // The player made when O reaches the walk camera is not in the start either.
+    GameOptions o = quick_game();
+    o.camera = CameraMode::fly;
+    GamePlay g(o, "0:O,1:O,2:R");
+    const std::uint64_t start_tick = g.sim().tick_count();
+    EXPECT_EQ(g.session->walker(), nullptr);
+    g.play(2); // orbit, then walk: the player is added
+    ASSERT_NE(g.session->walker(), nullptr);
+    g.play(); // R
+    EXPECT_FALSE(g.session->quit());
+    EXPECT_EQ(g.session->message(), "reset to tick " + std::to_string(start_tick));
+    EXPECT_EQ(g.session->camera().mode(), CameraMode::walk);
+    ASSERT_NE(g.session->walker(), nullptr) << "a new player where the camera stands";
+    EXPECT_TRUE(g.session->walker()->alive(g.sim()));
+}
+
 TEST(GameSession, FogKeyTogglesTheScenesFog) {
     GamePlay g(quick_game());
     ASSERT_TRUE(g.sim().world().has_resource<Fog>());
