@@ -30,7 +30,7 @@ set(SNOW_SIM_HEADERS
     systems/wind/wind.hpp systems/wind/wind_field.hpp systems/wind/wind_transport.hpp)
 set(SNOW_SCENE_HEADERS
     include/snow/scene.hpp
-    game/scene/scene_loader.hpp render/scene_visuals.hpp)
+    game/scene/scene_loader.hpp game/scene/scene_types.hpp render/scene_visuals.hpp)
 set(SNOW_RENDER_HEADERS
     include/snow/render.hpp
     render/camera.hpp render/frame_timings.hpp render/image.hpp render/render_error.hpp

@@ -29,7 +29,7 @@ FIELD = {"cells": [64, 16, 64]}
 # up to the ground's edge.
 VIEW = (1.0, -6.0, 10.0, 3.0)
 GARAGE = (3.0, -3.0, 7.0, 0.0)
-LEE_STRIP = (7.25, -3.0, 9.25, 0.0)  # tests/game/test_wind_field_scene.cpp
+LEE_STRIP = (7.25, -3.0, 9.25, 0.0)  # tests/game/scene/test_wind_field_scene.cpp
 SCALE = 4  # pixels per cell
 
 

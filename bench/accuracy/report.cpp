@@ -440,7 +440,7 @@ void preset_table(OutFile& md, const StudyResults& r) {
                  pt.cpu_ms_per_second(), pt.error.rel_l1, name_of(p.integrator).c_str(),
                  mm(p.max_drift), mm(p.drift));
     }
-    md.text("\nIn game/quality.hpp (dt, integrator, cell_scale, occlusion_resolution):\n\n"
+    md.text("\nIn game/play/quality.hpp (dt, integrator, cell_scale, occlusion_resolution):\n\n"
             "```cpp\n");
     for (const PresetPick& p : r.presets) {
         const SceneKnobs& k = s.points[p.point].knobs;

@@ -2,7 +2,7 @@
 // flakes, same gusts and walk), declares a field of the studied size and
 // interval, and samples the field's wind at fixed probes every 4 ticks after
 // the warm-up. The lee box and strip are those of the village's lee test
-// (tests/game/test_wind_field_scene.cpp): 0.25 – 2.25 m behind the garage's
+// (tests/game/scene/test_wind_field_scene.cpp): 0.25 – 2.25 m behind the garage's
 // lee face (x 7.25 – 9.25), along its width (z −3 – 0).
 #include "bench/accuracy/wind_field_study.hpp"
 

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "game/scene/scene_geometry.hpp"
-#include "game/scene/scene_loader.hpp"
 #include "game/scene/scene_schema.hpp"
+#include "game/scene/scene_types.hpp"
 
 #include <memory>
 #include <optional>
