@@ -65,11 +65,20 @@ void load_ledger(ByteReader& in, MassLedger& l, SimCounters& c) {
 
 /// Entity, record; for every T the snapshot holds.
 template <typename T>
-void save_each(ByteWriter& out, const std::vector<std::pair<Entity, T>>& items) {
-    out(static_cast<std::uint64_t>(items.size()));
-    for (const auto& [e, item] : items) {
+void save_each(ByteWriter& out, const World& world) {
+    out(static_cast<std::uint64_t>(world.count<T>()));
+    world.each<T>([&](Entity e, const T& item) {
         out(e.bits);
         save_state(out, item);
+    });
+}
+
+/// A resource that may be absent: a flag, then its record.
+template <typename T>
+void save_optional(ByteWriter& out, const T* item) {
+    out(item != nullptr);
+    if (item != nullptr) {
+        save_state(out, *item);
     }
 }
 
@@ -102,8 +111,9 @@ void require_valid(const ByteReader& in, const Invalid& bad) {
 
 } // namespace
 
+// Written straight from the world, in save()'s order and extent (no copy
+// of the state first).
 std::vector<std::byte> Simulation::save_bytes() const {
-    const std::unique_ptr<Snapshot> s = save();
     ByteWriter out;
     for (const char c : snapshot_magic) {
         out(c);
@@ -113,24 +123,16 @@ std::vector<std::byte> Simulation::save_bytes() const {
     const std::size_t payload_at = out.bytes().size();
     out(build_tag());
     out(scene_fingerprint());
-    out(s->clock.tick);
-    save_ledger(out, s->ledger, s->counters);
-    save_state(out, s->flakes);
-    out(s->wind.has_value());
-    if (s->wind) {
-        save_state(out, *s->wind);
-    }
-    out(s->wind_field.has_value());
-    if (s->wind_field) {
-        save_state(out, *s->wind_field);
-    }
-    out(s->sky_map.has_value());
-    if (s->sky_map) {
-        save_state(out, *s->sky_map);
-    }
-    save_each(out, s->surfaces);
-    save_each(out, s->covers);
-    save_each(out, s->bodies);
+    out(tick_count());
+    save_ledger(out, world_.resource<MassLedger>(), counters());
+    save_state(out, flakes());
+    save_optional(out, world_.try_resource<Wind>());
+    save_optional(out, world_.try_resource<WindField>());
+    const auto* map = world_.try_resource<OcclusionMap>();
+    save_optional(out, map != nullptr && map->built ? map : nullptr); // as save(): only a built map
+    save_each<SnowSurface>(out, world_);
+    save_each<SnowCover>(out, world_);
+    save_each<Body>(out, world_);
     std::vector<std::byte>& bytes = out.bytes();
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
