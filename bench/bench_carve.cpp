@@ -3,7 +3,7 @@
 // snow on 5 cm cells, each lapping its own square at 1.5 m/s, so every tick
 // each one ploughs fresh cells and pushes them to its rims. Only the body
 // and carve systems run (nothing falls), so the time is theirs alone.
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -33,8 +33,8 @@ std::unique_ptr<Simulation> make_ploughed_field(std::uint32_t bodies) {
     ground.size_x = ground.size_z = 2.0f * half;
     ground.cell = cell;
     ground.spills = false;
-    const Entity g = sim->add_surface(ground);
-    const SnowSurface& s = sim->surface(g);
+    const SurfaceId g = sim->add_surface(ground);
+    const SnowSurface& s = snow_surface(*sim, g);
     const auto units = static_cast<std::uint32_t>(std::lround(snow_m / s.unit_height));
     for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
         for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
@@ -61,7 +61,7 @@ void BM_CarveTrails(benchmark::State& state) {
     const auto bodies = static_cast<std::uint32_t>(state.range(0));
     const auto sim = make_ploughed_field(bodies);
     World& w = InternalAccess::world(*sim);
-    const auto start = sim->save();
+    const auto start = save_snapshot(*sim);
     std::uint64_t carved = 0, iteration = 0;
     for (auto _ : state) {
         const std::uint64_t before = sim->counters().carved_units;
@@ -70,7 +70,7 @@ void BM_CarveTrails(benchmark::State& state) {
         carved += sim->counters().carved_units - before;
         if (++iteration % restore_every == 0) {
             state.PauseTiming();
-            sim->restore(*start);
+            restore_snapshot(*sim, *start);
             state.ResumeTiming();
         }
     }

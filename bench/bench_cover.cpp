@@ -3,7 +3,7 @@
 // (ground mesh, four houses, a snowman, a ramp) with about 90k flakes in the
 // air in steady snowfall, under covers of 5 cm cells that are 256², 1024²
 // and 2048² cells large (the larger ones reach far past the yard).
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -63,17 +63,17 @@ void BM_CoverTick(benchmark::State& state) {
     const auto side = static_cast<std::uint32_t>(state.range(0));
     const auto threads = static_cast<unsigned>(state.range(1));
     const auto sim = make_covered_yard(side, threads);
-    const auto start = sim->save();
+    const auto start = save_snapshot(*sim);
     std::uint64_t iteration = 0, flake_ticks = 0;
     std::uint64_t landed = 0;
     for (auto _ : state) {
-        flake_ticks += sim->flakes().alive;
+        flake_ticks += flake_pool(*sim).alive;
         const std::uint64_t before = sim->counters().landed;
         sim->tick();
         landed += sim->counters().landed - before;
         if (++iteration % restore_every == 0) {
             state.PauseTiming();
-            sim->restore(*start);
+            restore_snapshot(*sim, *start);
             state.ResumeTiming();
         }
     }

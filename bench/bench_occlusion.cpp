@@ -4,7 +4,7 @@
 // small shed that moves between two spots, so every iteration rebuilds.
 #include "bench_scene.hpp"
 
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <cmath>
 #include <vector>
@@ -40,7 +40,7 @@ void occlusion_refresh(benchmark::State& state) {
     sim->set_occlusion(cam);
     const Aabb spots[2] = {{{5.0f, 0.0f, -7.0f}, {6.0f, 1.0f, -6.0f}},
                            {{5.5f, 0.0f, -7.0f}, {6.5f, 1.0f, -6.0f}}};
-    const Entity shed = sim->add_box(spots[0]);
+    const ColliderId shed = sim->add_box(spots[0]);
     World& w = InternalAccess::world(*sim);
     std::uint64_t i = 0;
     for (auto _ : state) {

@@ -6,6 +6,9 @@
 #ifdef SNOW_BENCH_RENDER
 
 #include "bench_scene.hpp"
+#include "render/context/osmesa_context.hpp"
+#include "render/renderer_internals.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "render/passes/flake_selection.hpp"
 
@@ -34,7 +37,7 @@ ViewCamera yard_camera() {
 
 void flake_selection(benchmark::State& state) {
     BenchWorld bw(static_cast<std::uint32_t>(state.range(0)), 1);
-    const FlakePool& pool = bw.sim->flakes();
+    const FlakePool& pool = flake_pool(*bw.sim);
     const ViewCamera cam = yard_camera();
     FlakeSelection sel;
     sel.view_proj = cam.projection(static_cast<float>(frame_width) / frame_height) * cam.view();
@@ -57,10 +60,10 @@ void render_frame(benchmark::State& state) {
     Renderer renderer(context);
     const ViewCamera cam = yard_camera();
     const SceneVisuals no_meshes;
-    renderer.render(bw.sim->world(), no_meshes, cam); // compiles shaders, uploads surfaces
+    renderer.render(*bw.sim, no_meshes, cam); // compiles shaders, uploads surfaces
     double flake_ms = 0.0;
     for (auto _ : state) {
-        renderer.render(bw.sim->world(), no_meshes, cam);
+        renderer.render(*bw.sim, no_meshes, cam);
         for (const PassTiming& p : renderer.timings().passes) {
             flake_ms += p.name == "flakes" ? p.cpu_ms : 0.0;
         }
@@ -132,7 +135,7 @@ void render_snow_cover(benchmark::State& state) {
         cam.position = {3.0f, 2.2f, 10.0f};
         cam.look_at({3.0f, 1.0f, -20.0f});
     }
-    renderer.render(world, visuals, cam); // compiles shaders, uploads every tile
+    render_world(renderer, world, visuals, cam); // compiles shaders, uploads every tile
     SnowSurface& s = world.get<SnowSurface>(cover);
     const auto changed = static_cast<std::uint32_t>(state.range(2));
     double pass_ms = 0.0, frame_ms = 0.0;
@@ -143,7 +146,7 @@ void render_snow_cover(benchmark::State& state) {
             s.snow[(static_cast<std::size_t>(frame * changed + k) * 104729u) % s.snow.size()] += 1;
         }
         ++frame;
-        renderer.render(world, visuals, cam);
+        render_world(renderer, world, visuals, cam);
         for (const PassTiming& p : renderer.timings().passes) {
             pass_ms += p.name == "snow_surfaces" ? p.cpu_ms : 0.0;
         }

@@ -1,4 +1,5 @@
 #include "bench_scene.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "systems/flakes/flake_order.hpp"
 #include "systems/geometry/colliders.hpp"
@@ -43,7 +44,7 @@ float start_floor(const World& w, float x, float z) {
 /// Places `count` prefill flakes spread over [start_floor, top of bounds] (a
 /// fixed low-discrepancy sequence in the flake number) at terminal velocity in the wind.
 void place_over_height(Simulation& sim, std::uint32_t count) {
-    const World& w = sim.world();
+    const World& w = world_of(sim);
     const float top = sim.config().bounds.max.y;
     const glm::vec3 wind = w.resource<Wind>().current;
     for (std::uint32_t i = 0; i < count; ++i) {
@@ -74,16 +75,16 @@ BenchWorld::BenchWorld(std::uint32_t flakes, unsigned threads, Load load) {
     while (sim->tick_count() % flake_order_every != 0) {
         sim->tick();
     }
-    start = sim->save();
+    start = save_snapshot(*sim);
 }
 
 BenchWorld::BenchWorld(std::unique_ptr<Simulation> ready) : sim(std::move(ready)) {
-    start = sim->save();
+    start = save_snapshot(*sim);
 }
 
 void BenchWorld::restore(benchmark::State& state) {
     state.PauseTiming();
-    sim->restore(*start);
+    restore_snapshot(*sim, *start);
     state.ResumeTiming();
 }
 

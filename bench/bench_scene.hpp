@@ -5,6 +5,7 @@
 /// every measured tick sees about the same load.
 #pragma once
 
+#include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 
 #include <benchmark/benchmark.h>
@@ -74,7 +75,7 @@ struct BenchWorld {
     /// restore_every iterations.
     template <typename Work>
     void step(benchmark::State& state, Work&& work) {
-        clock.time(sim->flakes().alive, work);
+        clock.time(flake_pool(*sim).alive, work);
         if (++iteration_ % restore_every == 0) {
             restore(state);
         }

@@ -13,6 +13,7 @@
 // units ([WF §4]), so the tops are the same for any thread count. No
 // colliders, no landing rules, no rolling, smoothing, spill or spawning.
 #include "bench_scene.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "ecs/job_pool.hpp"
 #include "ecs/rng.hpp"

@@ -2,7 +2,7 @@
 // on (the dirty area), not by the surface's size; spill by the border.
 #include "bench_scene.hpp"
 
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -13,7 +13,7 @@ namespace {
 /// One square surface of `side` cells of 5 cm, alone in a simulation.
 struct Field {
     Simulation sim;
-    Entity entity;
+    SurfaceId entity;
     std::vector<std::uint32_t> bare; ///< the starting snow (restored between iterations)
 
     explicit Field(std::uint32_t side, bool spills = false) : sim(SimConfig{}) {
@@ -24,7 +24,9 @@ struct Field {
         entity = sim.add_surface(d);
         bare = surface().snow;
     }
-    SnowSurface& surface() { return InternalAccess::world(sim).get<SnowSurface>(entity); }
+    SnowSurface& surface() {
+        return InternalAccess::world(sim).get<SnowSurface>(entity_of(entity));
+    }
     void land(std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
         SnowSurface& s = surface();
         s.snow[s.index(ix, iz)] += units;
@@ -113,11 +115,11 @@ void spill_border(benchmark::State& state) {
     }
     InternalAccess::world(f.sim).resource<MassLedger>().spawned = s.settled_units();
     f.restore(0, 0, side - 1, side - 1);
-    const auto start = f.sim.save();
+    const auto start = save_snapshot(f.sim);
     for (auto _ : state) {
         spill_system(InternalAccess::world(f.sim));
         state.PauseTiming();
-        f.sim.restore(*start);
+        restore_snapshot(f.sim, *start);
         state.ResumeTiming();
     }
     state.counters["border_cells"] = 4.0 * (side - 1);

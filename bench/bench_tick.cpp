@@ -2,7 +2,7 @@
 // threads (issue #8). ns_per_flake = time per tick / flakes alive that tick.
 #include "bench_scene.hpp"
 
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 namespace snow::bench {
 namespace {

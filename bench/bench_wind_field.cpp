@@ -7,7 +7,7 @@
 // not the surface).
 #include "bench_scene.hpp"
 
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/mass_ledger.hpp"
 #include "systems/snowpack/snow_surface.hpp"
 
@@ -51,7 +51,7 @@ void integrate_in_field(benchmark::State& state) {
     flake_order_system(w); // in spatial order, as a running simulation keeps them
     wind_field_system(w);  // the first step fills the field
     integrate_system(w);   // and every flake takes its first sample
-    bw.start = bw.sim->save();
+    bw.start = save_snapshot(*bw.sim);
     for (auto _ : state) {
         bw.step(state, [&] { integrate_system(w); });
     }
@@ -63,7 +63,7 @@ void integrate_in_field(benchmark::State& state) {
 /// surface's centre, blowing 10 m/s along +x (twice the threshold).
 struct WindySquare {
     Simulation sim;
-    Entity surface;
+    SurfaceId surface;
     std::vector<std::uint32_t> snow; ///< the starting snow
 
     WindySquare(std::uint32_t side, std::uint32_t windy) : sim(config(side)) {
@@ -79,7 +79,7 @@ struct WindySquare {
         sim.set_wind_field(field);
         sim.set_wind_transport(WindTransportDef{});
         World& w = InternalAccess::world(sim);
-        SnowSurface& s = w.get<SnowSurface>(surface);
+        SnowSurface& s = w.get<SnowSurface>(entity_of(surface));
         const auto units = static_cast<std::uint32_t>(std::lround(0.05f / s.unit_height));
         std::fill(s.snow.begin(), s.snow.end(), units);
         w.resource<MassLedger>().spawned += units * static_cast<std::uint64_t>(s.snow.size());
@@ -116,7 +116,7 @@ struct WindySquare {
     }
 
     void restore() {
-        SnowSurface& s = InternalAccess::world(sim).get<SnowSurface>(surface);
+        SnowSurface& s = InternalAccess::world(sim).get<SnowSurface>(entity_of(surface));
         s.snow = snow;
         s.clear_dirty();
     }

@@ -1,12 +1,14 @@
 # cmake --install exports snowConfig.cmake so `find_package(snow)` gives
-# snow::sim and, when built, snow::scene and snow::render (snow::ecs comes
-# along as their dependency). The public API is three headers:
-#   <snow/snow.hpp>    snow::sim     the Simulation (no GL)
+# snow::sim and, when built, snow::scene, snow::render and snow::c (snow::ecs
+# comes along as their dependency). The public API is include/snow/ alone:
+#   <snow/snow.hpp>    snow::sim     the Simulation (no GL), with defs.hpp,
+#                                    ids.hpp, views.hpp, error.hpp, task_system.hpp
 #   <snow/scene.hpp>   snow::scene   glTF scene loading (no GL)
 #   <snow/render.hpp>  snow::render  the renderer and its GL contexts
-# Only they and the headers they include are installed; every other header
-# (collider_grid, jobs, validation, sample_scenes, the render passes, ...)
-# stays in the source tree.
+#   <snow/snow.h>      snow::c       the C API
+# No installed header includes an internal one (ecs/, systems/, render/,
+# game/): configuring fails if one does, and snow_header_check compiles each
+# alone with only GLM on the include path.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -14,32 +16,11 @@ include(CMakePackageConfigHelpers)
 # visible change here; snow_check_header_closure() fails the configure step
 # when an include was added or dropped without updating these lists.
 set(SNOW_SIM_HEADERS
-    include/snow/snow.hpp include/snow/defs.hpp include/snow/task_system.hpp
-    ecs/component_pool.hpp ecs/entity.hpp ecs/error.hpp ecs/schedule.hpp ecs/type_id.hpp
-    ecs/world.hpp
-    systems/api/fixed_step.hpp systems/api/fog.hpp systems/api/simulation.hpp
-    systems/api/snapshot.hpp systems/api/spectral_snow.hpp
-    systems/bodies/body.hpp
-    systems/core/field_rules.hpp systems/core/limits.hpp systems/core/mass_ledger.hpp
-    systems/core/sim_config.hpp systems/core/sim_counters.hpp systems/core/simulation_error.hpp
-    systems/core/source_versions.hpp systems/core/units.hpp
-    systems/flakes/emitter.hpp systems/flakes/flake_pool.hpp systems/flakes/held_wind.hpp
-    systems/geometry/geometry.hpp
-    systems/sky/occlusion.hpp systems/sky/occlusion_map.hpp
-    systems/snowpack/snow_cover.hpp systems/snowpack/snow_surface.hpp
-    systems/wind/wind.hpp systems/wind/wind_field.hpp systems/wind/wind_transport.hpp)
-set(SNOW_SCENE_HEADERS
-    include/snow/scene.hpp
-    game/scene/scene_loader.hpp game/scene/scene_types.hpp render/scene_visuals.hpp)
-set(SNOW_RENDER_HEADERS
-    include/snow/render.hpp
-    render/camera.hpp render/frame_timings.hpp render/image.hpp render/render_error.hpp
-    render/render_settings.hpp render/renderer.hpp render/scene_visuals.hpp
-    render/context/context_request.hpp render/context/gl_context.hpp
-    render/context/glfw_context.hpp render/context/make_context.hpp
-    render/context/osmesa_context.hpp
-    render/gl/shader.hpp
-    render/passes/render_pass.hpp)
+    include/snow/snow.hpp include/snow/defs.hpp include/snow/error.hpp include/snow/ids.hpp
+    include/snow/task_system.hpp include/snow/views.hpp)
+set(SNOW_SCENE_HEADERS include/snow/scene.hpp include/snow/render.hpp)
+set(SNOW_RENDER_HEADERS include/snow/render.hpp)
+set(SNOW_INTERNAL "^(ecs|systems|render|game)/")
 
 # Every header reachable from `root` through #include "dir/file.hpp" (paths
 # from the source root) and #include <snow/file.hpp>.
@@ -80,8 +61,8 @@ function(snow_check_header_closure root listed forbidden)
     endif()
     foreach(header ${reached})
         if(forbidden AND header MATCHES "${forbidden}")
-            message(FATAL_ERROR "${root} reaches ${header}: it would need what that layer "
-                                "links (e.g. GL) in every embedder of its target")
+            message(FATAL_ERROR "${root} reaches ${header}: a public header must not "
+                                "include an internal one")
         endif()
     endforeach()
 endfunction()
@@ -102,13 +83,13 @@ function(snow_public_target target root listed forbidden)
     set(SNOW_EXPORTED ${SNOW_EXPORTED} ${target} PARENT_SCOPE)
     set(SNOW_INSTALLED_HEADERS ${SNOW_INSTALLED_HEADERS} ${public_headers} PARENT_SCOPE)
 endfunction()
-snow_public_target(snow_sim include/snow/snow.hpp SNOW_SIM_HEADERS "^(render|game)/")
-snow_public_target(snow_scene include/snow/scene.hpp SNOW_SCENE_HEADERS "^render/.*(context|renderer)")
-snow_public_target(snow_render include/snow/render.hpp SNOW_RENDER_HEADERS "^game/")
+snow_public_target(snow_sim include/snow/snow.hpp SNOW_SIM_HEADERS "${SNOW_INTERNAL}")
+snow_public_target(snow_scene include/snow/scene.hpp SNOW_SCENE_HEADERS "${SNOW_INTERNAL}")
+snow_public_target(snow_render include/snow/render.hpp SNOW_RENDER_HEADERS "${SNOW_INTERNAL}")
 # The C API reaches no header but its own (and the C library's).
 if(TARGET snow_c)
     set(SNOW_C_HEADERS include/snow/snow.h)
-    snow_check_header_closure(include/snow/snow.h SNOW_C_HEADERS "^(ecs|systems|render|game)/")
+    snow_check_header_closure(include/snow/snow.h SNOW_C_HEADERS "${SNOW_INTERNAL}")
     list(APPEND SNOW_EXPORTED snow_c)
     list(APPEND SNOW_INSTALLED_HEADERS ${SNOW_C_HEADERS})
 endif()
@@ -122,13 +103,7 @@ endforeach()
 install(TARGETS ${SNOW_EXPORTED} EXPORT snowTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# include/snow/x.hpp goes to <prefix>/include/snow/x.hpp; an internal dir/x.hpp
-# to <prefix>/include/snow/dir/x.hpp, where the public headers' quoted includes find it.
-foreach(header ${SNOW_INSTALLED_HEADERS})
-    get_filename_component(dir ${header} DIRECTORY)
-    string(REGEX REPLACE "^include/snow" "" dir ${dir})
-    install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow/${dir})
-endforeach()
+install(FILES ${SNOW_INSTALLED_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/snow)
 
 install(EXPORT snowTargets NAMESPACE snow:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/snow)
 configure_package_config_file(cmake/snowConfig.cmake.in
@@ -157,8 +132,7 @@ if(SNOW_BUILD_TESTS)
     endforeach()
     add_library(snow_header_check OBJECT ${header_checks})
     set_target_properties(snow_header_check PROPERTIES C_STANDARD 11 C_STANDARD_REQUIRED ON)
-    target_include_directories(snow_header_check PRIVATE ${PROJECT_SOURCE_DIR}/include
-                                                         ${PROJECT_SOURCE_DIR})
+    target_include_directories(snow_header_check PRIVATE ${PROJECT_SOURCE_DIR}/include)
     target_link_libraries(snow_header_check PRIVATE glm::glm)
     snow_set_options(snow_header_check)
     snow_require_sized_deallocation(snow_header_check)

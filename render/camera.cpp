@@ -1,4 +1,4 @@
-#include "render/camera.hpp"
+#include <snow/render.hpp>
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>

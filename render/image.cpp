@@ -1,6 +1,6 @@
-#include "render/image.hpp"
+#include <snow/render.hpp>
 
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION

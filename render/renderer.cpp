@@ -1,4 +1,4 @@
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 
 #include "render/gl/frame_block.hpp"
 #include "render/passes/body_pass.hpp"
@@ -11,10 +11,10 @@
 #include "render/passes/spectral_pass.hpp"
 #include "render/passes/surface_pass.hpp"
 #include "render/passes/wind_field_pass.hpp"
-#include "render/render_error.hpp"
-#include "systems/api/fog.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/bodies/body.hpp"
 #include "systems/sky/occlusion.hpp"
+#include <snow/error.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -26,6 +26,9 @@
 #include <cstring>
 
 namespace snow {
+
+// The public header cannot name the simulation's constant; the two must agree.
+static_assert(RenderSettings{}.exposure_tolerance == occlusion_tolerance);
 
 namespace {
 
@@ -85,7 +88,7 @@ struct Renderer::Impl {
     void fill_block(FrameBlock& b, const World& world, const SceneVisuals& visuals,
                     const ViewCamera& camera, const glm::mat4& view_proj, glm::ivec2 viewport,
                     bool has_occlusion) const;
-    void add_effect_passes(const World& world);
+    void add_effect_passes(const World& world, const SceneVisuals& visuals);
     [[nodiscard]] bool has_pass(std::string_view name) const;
 };
 
@@ -144,7 +147,7 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVi
     b.sun = lights == 0 ? glm::vec4(glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)), 0.8f)
                         : glm::vec4(0.0f);
     b.counts = {lights, 0, 0, 0};
-    if (const Fog* fog = world.try_resource<Fog>()) {
+    if (const Fog* fog = visuals.fog ? &*visuals.fog : nullptr) {
         const float fog_param = fog->mode == FogMode::half_life
                                     ? (fog->half_distance > 0.0f ? 1.0f / fog->half_distance : 0.0f)
                                     : clamp_non_negative(fog->density);
@@ -170,10 +173,10 @@ bool Renderer::Impl::has_pass(std::string_view name) const {
                        [&](const auto& p) { return p->name() == name; });
 }
 
-void Renderer::Impl::add_effect_passes(const World& world) {
+void Renderer::Impl::add_effect_passes(const World& world, const SceneVisuals& visuals) {
     // Draw only what the scene calls for: an effect's pass (and its FFT volume or
     // shader) exists from the first frame whose world declares the effect.
-    if (world.has_resource<SpectralSnow>() && !has_pass(SpectralPass::pass_name)) {
+    if (visuals.spectral && !has_pass(SpectralPass::pass_name)) {
         // Behind the particle flakes ([LZ] composites over the background).
         const auto flakes = std::find_if(passes.begin(), passes.end(),
                                          [](const auto& p) { return p->name() == "flakes"; });
@@ -189,8 +192,7 @@ void Renderer::Impl::add_effect_passes(const World& world) {
     const auto wind_arrows = std::find_if(passes.begin(), passes.end(), [](const auto& p) {
         return p->name() == WindFieldPass::pass_name;
     });
-    const Fog* fog = world.try_resource<Fog>();
-    if (fog != nullptr && !fog->puffs.empty() && !has_pass(FogPuffPass::pass_name)) {
+    if (visuals.fog && !visuals.fog->puffs.empty() && !has_pass(FogPuffPass::pass_name)) {
         // Over everything, flakes included; only the wind's arrows go after it.
         passes.insert(wind_arrows, std::make_unique<FogPuffPass>());
     }
@@ -200,11 +202,21 @@ void Renderer::Impl::add_effect_passes(const World& world) {
     }
 }
 
-void Renderer::render(const World& world, const SceneVisuals& visuals, const ViewCamera& camera) {
-    Impl& m = *impl_;
+struct RendererAccess {
+    static Renderer::Impl& impl(Renderer& r) { return *r.impl_; }
+};
+
+void Renderer::render(const Simulation& sim, const SceneVisuals& visuals,
+                      const ViewCamera& camera) {
+    render_world(*this, world_of(sim), visuals, camera);
+}
+
+void render_world(Renderer& renderer, const World& world, const SceneVisuals& visuals,
+                  const ViewCamera& camera) {
+    Renderer::Impl& m = RendererAccess::impl(renderer);
     const Clock::time_point frame_start = Clock::now();
     m.context.make_current();
-    m.add_effect_passes(world);
+    m.add_effect_passes(world, visuals);
     FrameTimings& t = m.timings;
     t.synchronous = m.settings.timing_mode;
     t.flakes_alive = t.flakes_drawn = t.surfaces_uploaded = t.meshes_uploaded = 0;
@@ -219,7 +231,7 @@ void Renderer::render(const World& world, const SceneVisuals& visuals, const Vie
     const OcclusionMap* map = world.try_resource<OcclusionMap>();
     const bool has_occlusion =
         map != nullptr && map->width > 0 && map->height > 0 && map->texel > 0.0f;
-    const Fog* fog = world.try_resource<Fog>();
+    const Fog* fog = visuals.fog ? &*visuals.fog : nullptr;
 
     FrameBlock block;
     m.fill_block(block, world, visuals, camera, view_proj, viewport, has_occlusion);
@@ -305,11 +317,11 @@ const RenderSettings& Renderer::settings() const {
     return impl_->settings;
 }
 
-void Renderer::insert_pass(std::string_view before, std::unique_ptr<RenderPass> pass) {
+void insert_pass(Renderer& renderer, std::string_view before, std::unique_ptr<RenderPass> pass) {
     if (!pass) {
         throw RenderError("insert_pass: null pass");
     }
-    auto& passes = impl_->passes;
+    auto& passes = RendererAccess::impl(renderer).passes;
     if (before.empty()) {
         passes.push_back(std::move(pass));
         return;

@@ -1,5 +1,6 @@
 // Depth fields and their comparison (method in docs/accuracy.md "Scene level").
 #include "bench/accuracy/depth_field.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,7 @@ double SurfaceDepth::volume() const {
 
 DepthField capture_depth(const Simulation& sim) {
     DepthField f;
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         SurfaceDepth d{s.x0, s.z0, s.cell, s.nx, s.nz, {}};
         d.depth.reserve(s.snow.size());
         for (const std::uint32_t units : s.snow) {

@@ -3,7 +3,7 @@
 /// its error against a reference field that may use other cell sizes.
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,8 @@
 #include "bench/accuracy/scene_run.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "bench/accuracy/cpu_clock.hpp"
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -32,7 +33,7 @@ SceneRun run_scene(const std::string& scene, const SceneKnobs& k, std::uint64_t 
         throw std::runtime_error(loaded.error);
     }
     Simulation& sim = *loaded.sim;
-    if (const Wind* w = sim.world().try_resource<Wind>(); w != nullptr && steady_wind) {
+    if (const Wind* w = world_of(sim).try_resource<Wind>(); w != nullptr && steady_wind) {
         Wind steady = *w;
         steady.walk = 0.0f;
         sim.set_wind(steady);
@@ -45,7 +46,7 @@ SceneRun run_scene(const std::string& scene, const SceneKnobs& k, std::uint64_t 
     sim.run(r.ticks);
     r.cpu_ms_per_tick = (thread_cpu_seconds() - t0) * 1.0e3 / static_cast<double>(r.ticks);
     r.mass = sim.mass();
-    r.ledger = sim.world().resource<MassLedger>();
+    r.ledger = world_of(sim).resource<MassLedger>();
     r.counters = sim.counters();
     r.field = capture_depth(sim);
     return r;

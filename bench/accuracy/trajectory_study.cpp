@@ -4,7 +4,7 @@
 #include "bench/accuracy/trajectory_study.hpp"
 
 #include "bench/accuracy/cpu_clock.hpp"
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/flakes/integrator.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 
@@ -45,7 +45,7 @@ std::uint64_t ticks_for(float seconds, float dt) {
 /// Error columns of one (integrator, dt): flakes start at rest at the origin.
 TrajectoryRow measure_error(const TrajectoryOptions& o, Integrator integrator, float dt) {
     auto sim = make_pool(o, dt, integrator, o.flakes);
-    const FlakePool& f = sim->flakes();
+    const FlakePool& f = flake_pool(*sim);
     const glm::vec3 g = sim->config().gravity;
     for (std::uint32_t n = 0; n < o.flakes; ++n) {
         FlakeSpec flake;
@@ -104,7 +104,7 @@ double measure_cost(const TrajectoryOptions& o, Integrator integrator, float dt,
         }
         best = std::min(best, thread_cpu_seconds() - t0);
     }
-    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * sim->flakes().alive);
+    return best * 1.0e9 / (static_cast<double>(o.timing_ticks) * flake_pool(*sim).alive);
 }
 
 } // namespace

@@ -7,10 +7,10 @@
 #include "bench/accuracy/wind_field_study.hpp"
 
 #include "bench/accuracy/cpu_clock.hpp"
-#include "game/scene/scene_loader.hpp"
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/snowpack/ground_snow.hpp"
+#include <snow/scene.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -102,7 +102,7 @@ Run run_field(const WindFieldStudyOptions& o, const WindFieldKnobs& k, const Pro
     const double t0 = thread_cpu_seconds();
     for (std::uint64_t t = warm; t + sample_every <= ticks; t += sample_every) {
         sim.run(sample_every);
-        const WindField& f = sim.world().resource<WindField>();
+        const WindField& f = world_of(sim).resource<WindField>();
         for (std::size_t i = 0; i < probes.at.size(); ++i) {
             r.mean[i] += f.at(probes.at[i].x, probes.at[i].y, probes.at[i].z);
         }
@@ -124,7 +124,7 @@ Run run_field(const WindFieldStudyOptions& o, const WindFieldKnobs& k, const Pro
     };
     r.point.lee_speed = mean_speed(probes.lee_begin, probes.free_begin);
     r.point.free_speed = mean_speed(probes.free_begin, probes.at.size());
-    r.point.lee_units = ground_units_in(sim.world(), {lee_x0, lee_z0, lee_x1, lee_z1});
+    r.point.lee_units = ground_units_in(world_of(sim), {lee_x0, lee_z0, lee_x1, lee_z1});
     r.point.depth = capture_depth(sim);
     return r;
 }

@@ -21,7 +21,7 @@ int main() {
         ground.size_x = ground.size_z = 12.0f;
         ground.cell = 0.1f;
         ground.spills = false;
-        const snow::Entity ground_id = sim.add_surface(ground);
+        const snow::SurfaceId ground_id = sim.add_surface(ground);
         snow::Emitter emitter;
         emitter.rate = 4000.0f;
         sim.add_emitter(emitter);
@@ -32,7 +32,7 @@ int main() {
         // The host renders at 144 Hz; the simulation keeps its 60 Hz tick.
         const double frame_dt = 1.0 / 144.0;
         snow::FixedStep step(config.dt);
-        snow::Entity snowball = snow::null_entity;
+        snow::BodyId snowball;
         for (int frame = 0; frame < 144 * 8; ++frame) {
             sim.run(step.advance(frame_dt));
             if (frame == 144 * 2) {
@@ -49,7 +49,7 @@ int main() {
             }
         }
 
-        const snow::SnowSurface& surface = sim.surface(ground_id);
+        const snow::SnowGrid surface = sim.surface(ground_id);
         float deepest = 0.0f;
         for (std::size_t i = 0; i < surface.cell_count(); ++i) {
             deepest = std::max(deepest, surface.depth(i));
@@ -58,7 +58,7 @@ int main() {
         std::printf("embed_snow: %llu ticks, %u flakes airborne, deepest snow %.4f m\n",
                     static_cast<unsigned long long>(sim.tick_count()), sim.flakes().alive,
                     static_cast<double>(deepest));
-        const snow::Body& ball = sim.body(snowball);
+        const snow::BodyState ball = sim.body(snowball);
         std::printf("embed_snow: the snowball picked up %llu units on its way to x = %.2f m\n",
                     static_cast<unsigned long long>(ball.carried),
                     static_cast<double>(ball.position.x));

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
         request.height = 240;
         auto context = snow::make_context(request);
         snow::Renderer renderer(*context);
-        renderer.render(scene.sim->world(), scene.visuals,
+        renderer.render(*scene.sim, scene.visuals,
                         snow::ViewCamera::from_def(scene.visuals.camera));
         snow::write_png(out_path, renderer.read_pixels());
         const snow::MassReport m = scene.sim->mass();

@@ -3,6 +3,7 @@
 #include <snow/scene.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace {
 
@@ -11,18 +12,18 @@ Vec3 vec(const glm::vec3& v) {
 }
 
 /// The ground a host draws snow on: the largest cover or surface that lies
-/// on no solid (snow_game's readout picks the same one); null when none.
-snow::Entity find_ground(const snow::World& world) {
-    snow::Entity best = snow::null_entity;
+/// on no solid (snow_game's readout picks the same one); none when none.
+std::optional<std::size_t> find_ground(const snow::Simulation& sim) {
+    std::optional<std::size_t> best;
     std::size_t best_cells = 0;
-    world.each<snow::SnowSurface>([&](snow::Entity e, const snow::SnowSurface& s) {
-        const snow::SurfaceOf* of = world.try_get<snow::SurfaceOf>(e);
-        const bool ground = world.has<snow::SnowCover>(e) || (of != nullptr && of->owner.is_null());
-        if (ground && s.cell_count() > best_cells) {
-            best = e;
-            best_cells = s.cell_count();
+    for (std::size_t i = 0; i < sim.snow_grid_count(); ++i) {
+        const snow::SnowGrid g = sim.snow_grid(i);
+        const bool ground = !g.cover.is_null() || g.owner.is_null();
+        if (ground && g.cell_count() > best_cells) {
+            best = i;
+            best_cells = g.cell_count();
         }
-    });
+    }
     return best;
 }
 
@@ -30,11 +31,11 @@ snow::Entity find_ground(const snow::World& world) {
 
 struct SnowFeed::State {
     snow::SceneLoadResult scene;
-    snow::Entity ground;
+    std::size_t ground; ///< its snow_grid() index (the scene never removes one)
     snow::FixedStep step;
 
     [[nodiscard]] snow::Simulation& sim() const { return *scene.sim; }
-    [[nodiscard]] const snow::SnowSurface& surface() const { return sim().surface(ground); }
+    [[nodiscard]] snow::SnowGrid surface() const { return sim().snow_grid(ground); }
 };
 
 std::unique_ptr<SnowFeed> SnowFeed::load(const std::string& path, std::string& error) {
@@ -43,14 +44,14 @@ std::unique_ptr<SnowFeed> SnowFeed::load(const std::string& path, std::string& e
         error = scene.error;
         return nullptr;
     }
-    const snow::Entity ground = find_ground(scene.sim->world());
-    if (ground.is_null()) {
+    const std::optional<std::size_t> ground = find_ground(*scene.sim);
+    if (!ground) {
         error = path + ": no snow cover and no surface on the ground";
         return nullptr;
     }
     const double dt = scene.sim->config().dt;
     return std::unique_ptr<SnowFeed>(new SnowFeed(
-        std::make_unique<State>(State{std::move(scene), ground, snow::FixedStep(dt)})));
+        std::make_unique<State>(State{std::move(scene), *ground, snow::FixedStep(dt)})));
 }
 
 SnowFeed::SnowFeed(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -80,11 +81,11 @@ Vec3 SnowFeed::bounds_max() const {
 }
 
 void SnowFeed::flakes(std::vector<Vec3>& out) const {
-    const snow::FlakePool& pool = state_->sim().flakes();
+    const snow::FlakesView flakes = state_->sim().flakes();
     out.clear();
-    for (std::uint32_t slot = 0; slot < pool.slot_end; ++slot) {
-        if (pool.is_alive(slot)) {
-            out.push_back({pool.px[slot], pool.py[slot], pool.pz[slot]});
+    for (std::size_t slot = 0; slot < flakes.slots(); ++slot) {
+        if (flakes.is_alive(slot)) {
+            out.push_back({flakes.x[slot], flakes.y[slot], flakes.z[slot]});
         }
     }
 }
@@ -97,14 +98,14 @@ std::uint32_t SnowFeed::ground_nz() const {
 }
 
 void SnowFeed::ground(std::vector<GroundPoint>& out) const {
-    const snow::SnowSurface& s = state_->surface();
+    const snow::SnowGrid s = state_->surface();
     out.clear();
     for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
         for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
             const std::size_t i = s.index(ix, iz);
             out.push_back({s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell,
                            s.z0 + (static_cast<float>(iz) + 0.5f) * s.cell,
-                           s.height(s.base_level[i]) + s.depth(i), s.depth(i), !s.is_void(i)});
+                           s.base_y(i) + s.depth(i), s.depth(i), s.has_ground(i)});
         }
     }
 }
@@ -114,7 +115,7 @@ std::uint64_t SnowFeed::ground_base_version() const {
 }
 
 float SnowFeed::deepest_snow() const {
-    const snow::SnowSurface& s = state_->surface();
+    const snow::SnowGrid s = state_->surface();
     float deepest = 0.0f;
     for (std::size_t i = 0; i < s.cell_count(); ++i) {
         deepest = std::max(deepest, s.depth(i));

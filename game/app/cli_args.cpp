@@ -1,5 +1,7 @@
 #include "game/app/cli_args.hpp"
 
+#include "systems/core/sim_config.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>

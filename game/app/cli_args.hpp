@@ -3,7 +3,7 @@
 /// a bad value gives one message naming the flag, never a silent default.
 #pragma once
 
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include <glm/vec3.hpp>
 

@@ -2,11 +2,12 @@
 // boundary, keeps its text for snow_last_error() and returns a status.
 #include <snow/snow.h>
 
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include <cstring>
 #include <exception>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,14 +41,12 @@ snow_status guarded(const Body& body) {
     }
 }
 
-/// The surface at `index` in the world's order (covers included), or null.
-const snow::SnowSurface* surface_at(const snow_sim* s, std::size_t index) {
-    const snow::SnowSurface* found = nullptr;
-    std::size_t k = 0;
-    s->sim->world().each<snow::SnowSurface>([&](snow::Entity, const snow::SnowSurface& surface) {
-        found = k++ == index ? &surface : found;
-    });
-    return found;
+/// The grid at `index` of Simulation::snow_grid (covers included), or none.
+std::optional<snow::SnowGrid> surface_at(const snow_sim* s, std::size_t index) {
+    if (index >= s->sim->snow_grid_count()) {
+        return std::nullopt;
+    }
+    return s->sim->snow_grid(index);
 }
 
 #define SNOW_REQUIRE(cond, what)                                                                   \
@@ -116,22 +115,22 @@ snow_status snow_sim_mass(const snow_sim* sim, snow_mass* out) {
 
 snow_status snow_sim_surface_count(const snow_sim* sim, size_t* out) {
     SNOW_REQUIRE(sim != nullptr && out != nullptr, "snow_sim_surface_count: sim or out is null");
-    *out = sim->sim->world().count<snow::SnowSurface>();
+    *out = sim->sim->snow_grid_count();
     return SNOW_OK;
 }
 
 snow_status snow_sim_surface_grid(const snow_sim* sim, size_t index, snow_grid* out) {
     SNOW_REQUIRE(sim != nullptr && out != nullptr, "snow_sim_surface_grid: sim or out is null");
-    const snow::SnowSurface* s = surface_at(sim, index);
-    SNOW_REQUIRE(s != nullptr, "snow_sim_surface_grid: index is past the last surface");
+    const std::optional<snow::SnowGrid> s = surface_at(sim, index);
+    SNOW_REQUIRE(s.has_value(), "snow_sim_surface_grid: index is past the last surface");
     *out = {s->nx, s->nz, s->x0, s->z0, s->cell};
     return SNOW_OK;
 }
 
 snow_status snow_sim_surface_depth(const snow_sim* sim, size_t index, float* out, size_t n) {
     SNOW_REQUIRE(sim != nullptr && out != nullptr, "snow_sim_surface_depth: sim or out is null");
-    const snow::SnowSurface* s = surface_at(sim, index);
-    SNOW_REQUIRE(s != nullptr, "snow_sim_surface_depth: index is past the last surface");
+    const std::optional<snow::SnowGrid> s = surface_at(sim, index);
+    SNOW_REQUIRE(s.has_value(), "snow_sim_surface_depth: index is past the last surface");
     if (n < s->cell_count()) {
         return fail(SNOW_ERROR_BUFFER, "snow_sim_surface_depth: n is smaller than nx * nz (" +
                                            std::to_string(s->cell_count()) + ")");
@@ -146,13 +145,13 @@ snow_status snow_sim_flake_positions(const snow_sim* sim, float* xyz, size_t max
     SNOW_REQUIRE(sim != nullptr && count != nullptr,
                  "snow_sim_flake_positions: sim or count is null");
     SNOW_REQUIRE(xyz != nullptr || max == 0, "snow_sim_flake_positions: xyz is null");
-    const snow::FlakePool& f = sim->sim->flakes();
+    const snow::FlakesView f = sim->sim->flakes();
     std::size_t k = 0;
-    for (std::uint32_t i = 0; i < f.slot_end && k < max; ++i) {
+    for (std::size_t i = 0; i < f.slots() && k < max; ++i) {
         if (f.is_alive(i)) {
-            xyz[3 * k] = f.px[i];
-            xyz[3 * k + 1] = f.py[i];
-            xyz[3 * k + 2] = f.pz[i];
+            xyz[3 * k] = f.x[i];
+            xyz[3 * k + 1] = f.y[i];
+            xyz[3 * k + 2] = f.z[i];
             ++k;
         }
     }

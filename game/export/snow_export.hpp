@@ -5,7 +5,7 @@
 #pragma once
 
 #include "game/export/staged_files.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <cstdint>
 #include <filesystem>

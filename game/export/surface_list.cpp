@@ -1,4 +1,5 @@
 #include "game/export/surface_list.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <algorithm>
 
@@ -9,7 +10,7 @@ std::string_view kind_name(SurfaceKind k) {
 }
 
 std::vector<NamedSurface> named_surfaces(const Simulation& sim) {
-    const World& w = sim.world();
+    const World& w = world_of(sim);
     std::vector<NamedSurface> out;
     w.each<SnowSurface>([&](Entity e, const SnowSurface& s) {
         const SurfaceKind kind = w.has<SnowCover>(e) ? SurfaceKind::cover : SurfaceKind::surface;

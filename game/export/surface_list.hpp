@@ -4,7 +4,7 @@
 /// and exports.
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <cstdint>
 #include <string>

@@ -4,7 +4,7 @@
 /// scroll for speed) and orbit (drag to circle a target, scroll to zoom).
 #pragma once
 
-#include "render/camera.hpp"
+#include <snow/render.hpp>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,4 +1,5 @@
 #include "game/play/game_app.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/play/frame_recorder.hpp"
 #include "game/play/game_session.hpp"
@@ -7,6 +8,7 @@
 #include "game/play/input_reader.hpp"
 #include "game/play/quality.hpp"
 #include "game/play/session_report.hpp"
+#include "render/context/glfw_context.hpp"
 
 #include <snow/render.hpp>
 
@@ -112,7 +114,7 @@ int play(GameOptions opt) {
             break;
         }
         follow_session(*session, renderer->settings());
-        renderer->render(session->sim().world(), session->visuals(), session->camera().camera());
+        renderer->render(session->sim(), session->visuals(), session->camera().camera());
         if (session->screenshot_requested()) {
             session->say("screenshot " + save_screenshot(renderer->read_pixels(), screenshots++));
         }

@@ -1,4 +1,5 @@
 #include "game/play/game_session.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/app/builtin_scene.hpp"
 #include "game/play/quality.hpp"
@@ -58,10 +59,8 @@ bool GameSession::load() {
     }
     walker_.reset();
     step_ = FixedStep(sim_->config().dt);
-    const World& w = sim_->world();
-    if (const Fog* f = w.try_resource<Fog>()) {
-        fog_ = *f;
-    }
+    const World& w = world_of(*sim_);
+    fog_ = visuals_.fog;
     const bool walkable = ground_surface(w) != nullptr;
     if (opt_.camera == CameraMode::walk && !walkable) {
         std::fprintf(stderr, "snow_game: --camera walk: the scene has no cover and no ground "
@@ -74,9 +73,9 @@ bool GameSession::load() {
         camera_->set_mode(opt_.camera.value_or(walkable ? CameraMode::walk : CameraMode::fly));
     }
     if (opt_.snowfall) {
-        std::vector<Entity> emitters;
-        w.each<Emitter>([&](Entity e, const Emitter&) { emitters.push_back(e); });
-        for (const Entity e : emitters) {
+        std::vector<EmitterId> emitters;
+        w.each<Emitter>([&](Entity e, const Emitter&) { emitters.push_back(id_of<EmitterId>(e)); });
+        for (const EmitterId e : emitters) {
             sim_->set_emitter_rate(e, *opt_.snowfall);
         }
     }
@@ -93,7 +92,7 @@ bool GameSession::load() {
         std::fflush(stdout);
         sim_->run(opt_.warmup_ticks);
     }
-    start_ = sim_->save();
+    start_ = save_snapshot(*sim_);
     start_tick_ = sim_->tick_count();
     return true;
 }
@@ -109,17 +108,17 @@ void GameSession::ensure_walker() {
 }
 
 void GameSession::take_over_walker() {
-    const World& w = sim_->world();
-    Entity scene_walker;
+    const World& w = world_of(*sim_);
+    BodyId scene_walker;
     w.each<Body>([&](Entity e, const Body& b) {
         if (scene_walker.is_null() && b.motion.waypoints.size() > 1) {
-            scene_walker = e;
+            scene_walker = id_of<BodyId>(e);
         }
     });
     if (scene_walker.is_null() || ground_surface(w) == nullptr) {
         return;
     }
-    const Body& b = sim_->body(scene_walker);
+    const Body& b = body_of(*sim_, scene_walker);
     std::vector<glm::vec2> points;
     for (const glm::vec3& p : b.motion.waypoints) {
         points.emplace_back(p.x, p.z);
@@ -159,7 +158,7 @@ void GameSession::update(const PlayerActions& actions, std::uint64_t frame,
 }
 
 void GameSession::next_camera() {
-    const bool walkable = ground_surface(sim_->world()) != nullptr;
+    const bool walkable = ground_surface(world_of(*sim_)) != nullptr;
     CameraMode mode = camera_->mode();
     do {
         mode = static_cast<CameraMode>((static_cast<int>(mode) + 1) % 3);
@@ -173,9 +172,9 @@ void GameSession::next_camera() {
 }
 
 void GameSession::change_snowfall(float factor) {
-    std::vector<std::pair<Entity, float>> rates;
-    sim_->world().each<Emitter>([&](Entity e, const Emitter& em) {
-        rates.emplace_back(e, std::clamp(em.rate * factor, 10.0f, 1.0e6f));
+    std::vector<std::pair<EmitterId, float>> rates;
+    world_of(*sim_).each<Emitter>([&](Entity e, const Emitter& em) {
+        rates.emplace_back(id_of<EmitterId>(e), std::clamp(em.rate * factor, 10.0f, 1.0e6f));
     });
     float rate = 0.0f;
     for (const auto& [emitter, new_rate] : rates) {
@@ -186,7 +185,7 @@ void GameSession::change_snowfall(float factor) {
 }
 
 void GameSession::change_wind(Action a) {
-    const World& w = sim_->world();
+    const World& w = world_of(*sim_);
     Wind wind = w.has_resource<Wind>() ? w.resource<Wind>() : Wind{};
     const glm::vec3 old_base = wind.base;
     if (a == Action::wind_left || a == Action::wind_right) {
@@ -200,7 +199,7 @@ void GameSession::change_wind(Action a) {
 }
 
 void GameSession::apply(Action a, const PlayerActions& actions, std::uint64_t frame) {
-    const World& w = sim_->world();
+    const World& w = world_of(*sim_);
     switch (a) {
     case Action::pause:
         paused_ = !paused_;
@@ -229,11 +228,11 @@ void GameSession::apply(Action a, const PlayerActions& actions, std::uint64_t fr
     case Action::toggle_fog:
         if (!fog_) {
             say("this scene declares no fog");
-        } else if (w.has_resource<Fog>()) {
-            sim_->clear_fog();
+        } else if (visuals_.fog) {
+            visuals_.fog.reset();
             say("fog off");
         } else {
-            sim_->set_fog(*fog_);
+            visuals_.fog = fog_;
             say("fog on");
         }
         break;
@@ -282,18 +281,18 @@ void GameSession::apply(Action a, const PlayerActions& actions, std::uint64_t fr
 
 void GameSession::reset_to_start() {
     added_bodies_.clear();
-    sim_->world().each<Body>([&](Entity e, const Body&) {
+    world_of(*sim_).each<Body>([&](Entity e, const Body&) {
         const auto saved = std::find_if(start_->bodies.begin(), start_->bodies.end(),
                                         [e](const auto& body) { return body.first == e; });
         if (saved == start_->bodies.end()) {
-            added_bodies_.push_back(e);
+            added_bodies_.push_back(id_of<BodyId>(e));
         }
     });
-    for (const Entity e : added_bodies_) {
+    for (const BodyId e : added_bodies_) {
         sim_->remove(e);
     }
     try {
-        sim_->restore(*start_);
+        restore_snapshot(*sim_, *start_);
     } catch (const SimulationError& e) { // restore changed nothing; the game goes on
         say(std::string("cannot reset: ") + e.what());
         return;

@@ -13,8 +13,9 @@
 #include "game/play/time_scale.hpp"
 #include "game/play/walker.hpp"
 
-#include "render/render_settings.hpp"
-#include "render/scene_visuals.hpp"
+#include <snow/render.hpp>
+
+#include "systems/api/simulation_internals.hpp"
 
 #include <snow/snow.hpp>
 
@@ -97,7 +98,7 @@ class GameSession {
     SceneVisuals visuals_;
     FixedStep step_{1.0 / 60.0}; ///< window frames; load() sets it to the scene's dt
     std::unique_ptr<Snapshot> start_;
-    std::vector<Entity> added_bodies_; ///< reset_to_start's list, kept to reuse its memory
+    std::vector<BodyId> added_bodies_; ///< reset_to_start's list, kept to reuse its memory
     std::uint64_t start_tick_ = 0;
     std::optional<Fog> fog_; ///< the scene's fog, kept while toggled off
     std::optional<CameraController> camera_;

@@ -1,4 +1,5 @@
 #include "game/play/hud.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/play/game_input.hpp"
 #include "game/play/hud_info.hpp"
@@ -41,7 +42,7 @@ void Hud::draw(const GameSession& session, const FrameTimings& frame, float fps)
     const MassReport m = sim.mass();
     ImGui::Text("%.1f fps  tick %llu%s", static_cast<double>(info.fps),
                 static_cast<unsigned long long>(sim.tick_count()), info.paused ? "  PAUSED" : "");
-    ImGui::Text("flakes alive %u (drawn %u)", sim.flakes().alive, frame.flakes_drawn);
+    ImGui::Text("flakes alive %u (drawn %u)", flake_pool(sim).alive, frame.flakes_drawn);
     const auto kg = [](std::uint64_t units) { return static_cast<double>(units) * unit_kg; };
     ImGui::Text("snow %.3f kg spawned = %.3f airborne + %.3f settled", kg(m.spawned),
                 kg(m.airborne), kg(m.settled));
@@ -58,7 +59,7 @@ void Hud::draw(const GameSession& session, const FrameTimings& frame, float fps)
     ImGui::Text("quality %s, camera %s, fog %s", info.quality.c_str(), info.camera_mode.c_str(),
                 info.fog_on ? "on" : "off");
     if (ImGui::CollapsingHeader("ms per system", ImGuiTreeNodeFlags_DefaultOpen)) {
-        for (const SystemStats& s : sim.schedule().stats()) {
+        for (const SystemStats& s : schedule_of(sim).stats()) {
             ImGui::Text("%-13s %7.3f", s.name.c_str(),
                         s.calls ? s.total_ms / static_cast<double>(s.calls) : 0.0);
         }

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "game/play/game_session.hpp"
-#include "render/frame_timings.hpp"
+#include <snow/render.hpp>
 
 struct GLFWwindow;
 

@@ -1,4 +1,5 @@
 #include "game/play/hud_info.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/play/quality.hpp"
 
@@ -11,7 +12,7 @@ HudInfo hud_info(const GameSession& session, float fps) {
     info.fps = fps;
     info.paused = session.paused();
     info.help = session.help();
-    info.fog_on = sim.world().has_resource<Fog>();
+    info.fog_on = session.visuals().fog.has_value();
     info.quality = quality_presets[session.quality()].name;
     info.camera_mode = camera_mode_name(camera.mode());
     info.last_message = session.message();

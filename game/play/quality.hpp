@@ -4,8 +4,8 @@
 /// level of detail (not part of that study).
 #pragma once
 
-#include "game/scene/scene_loader.hpp"
-#include "render/render_settings.hpp"
+#include <snow/render.hpp>
+#include <snow/scene.hpp>
 
 #include <array>
 #include <cstdint>

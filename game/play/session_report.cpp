@@ -1,4 +1,5 @@
 #include "game/play/session_report.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/play/snow_readout.hpp"
 
@@ -40,7 +41,7 @@ std::string clock_text(double seconds) {
 
 std::string moment_label(const GameSession& session) {
     std::string label = "t " + clock_text(simulated_seconds(session));
-    if (const SnowSurface* g = ground_surface(session.sim().world())) {
+    if (const SnowSurface* g = ground_surface(world_of(session.sim()))) {
         label += text_of("  %.1f cm", 100.0 * mean_depth(*g));
     }
     return label;
@@ -55,7 +56,7 @@ std::string progress_line(const GameSession& session, std::uint64_t frame, std::
         static_cast<unsigned long long>(frame + 1), static_cast<unsigned long long>(frames),
         static_cast<unsigned long long>(sim.tick_count()),
         clock_text(simulated_seconds(session)).c_str(), moment_label(session).c_str(),
-        sim.flakes().alive, static_cast<unsigned long long>(sim.mass().settled), render_ms);
+        flake_pool(sim).alive, static_cast<unsigned long long>(sim.mass().settled), render_ms);
 }
 
 std::string session_report(const GameSession& session, std::uint64_t frames) {

@@ -3,6 +3,8 @@
 /// the snow column under a point, the ground, and how deep the ground's snow is.
 #pragma once
 
+#include "systems/api/simulation_internals.hpp"
+
 #include <snow/snow.hpp>
 
 #include <limits>

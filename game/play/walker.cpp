@@ -1,4 +1,5 @@
 #include "game/play/walker.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "systems/geometry/colliders.hpp"
 
@@ -84,7 +85,7 @@ std::string metres(float m) {
 
 Walker::Walker(Simulation& sim, const glm::vec3& start, WalkerSettings settings) : s_(settings) {
     glm::vec2 at = xz(start);
-    if (const SnowSurface* g = ground_surface(sim.world())) {
+    if (const SnowSurface* g = ground_surface(world_of(sim))) {
         const float x1 = g->x0 + static_cast<float>(g->nx) * g->cell;
         const float z1 = g->z0 + static_cast<float>(g->nz) * g->cell;
         at = {std::clamp(at.x, std::min(g->x0 + 1.0f, x1), std::max(x1 - 1.0f, g->x0)),
@@ -94,26 +95,27 @@ Walker::Walker(Simulation& sim, const glm::vec3& start, WalkerSettings settings)
     d.shape = BodyShape::capsule;
     d.radius = s_.radius;
     d.half_height = s_.half_height;
-    const auto column = snow_column(sim.world(), at.x, at.y);
+    const auto column = snow_column(world_of(sim), at.x, at.y);
     d.position = {at.x, (column ? column->base : start.y) + s_.half_height + s_.radius, at.y};
     body_ = sim.add_body(d);
     trail_.push_back(at);
 }
 
 std::optional<SnowColumn> Walker::footing(const Simulation& sim, float x, float z) const {
-    return snow_column(sim.world(), x, z, bottom(sim.body(body_)) + s_.step);
+    return snow_column(world_of(sim), x, z, bottom(body_of(sim, body_)) + s_.step);
 }
 
 bool Walker::alive(const Simulation& sim) const {
-    return sim.world().alive(body_) && sim.world().has<Body>(body_);
+    return world_of(sim).alive(entity_of(body_)) && world_of(sim).has<Body>(entity_of(body_));
 }
 
 bool Walker::ball_alive(const Simulation& sim) const {
-    return !ball_.is_null() && sim.world().alive(ball_) && sim.world().has<Body>(ball_);
+    return !ball_.is_null() && world_of(sim).alive(entity_of(ball_)) &&
+           world_of(sim).has<Body>(entity_of(ball_));
 }
 
 void Walker::restart(const Simulation& sim) {
-    trail_.assign(1, xz(sim.body(body_).position));
+    trail_.assign(1, xz(body_of(sim, body_).position));
 }
 
 glm::vec2 Walker::free_move(const World& w, const Body& b, const glm::vec2& from,
@@ -145,12 +147,12 @@ glm::vec2 Walker::free_move(const World& w, const Body& b, const glm::vec2& from
 }
 
 void Walker::before_tick(Simulation& sim, const glm::vec2& direction) {
-    const Body& b = sim.body(body_);
+    const Body& b = body_of(sim, body_);
     const glm::vec2 from = xz(b.position);
     const glm::vec2 to =
         direction == glm::vec2(0.0f)
             ? from
-            : free_move(sim.world(), b, from, direction * (s_.speed * sim.config().dt));
+            : free_move(world_of(sim), b, from, direction * (s_.speed * sim.config().dt));
     // Stand on the ground there (covers build their base in the first tick).
     const auto column = footing(sim, to.x, to.y);
     const float y = column ? column->base + s_.half_height + s_.radius : b.position.y;
@@ -167,7 +169,7 @@ void Walker::roll_snowball(Simulation& sim) {
     if (!ball_alive(sim)) {
         return;
     }
-    const Body& ball = sim.body(ball_);
+    const Body& ball = body_of(sim, ball_);
     glm::vec2 v = xz(ball.velocity);
     if (v == glm::vec2(0.0f)) {
         return;
@@ -176,16 +178,16 @@ void Walker::roll_snowball(Simulation& sim) {
     v *= std::max(0.0f, 1.0f - s_.ball_friction * dt);
     const glm::vec2 from = xz(ball.position);
     const glm::vec2 step = v * dt;
-    if (glm::length(v) < 0.05f || free_move(sim.world(), ball, from, step) != from + step) {
+    if (glm::length(v) < 0.05f || free_move(world_of(sim), ball, from, step) != from + step) {
         v = glm::vec2(0.0f); // stopped by friction, a wall or the end of the snow
     }
     sim.set_body_velocity(ball_, {v.x, 0.0f, v.y});
 }
 
 std::string Walker::push_snowball(Simulation& sim, const glm::vec2& facing) {
-    const Body& p = sim.body(body_);
+    const Body& p = body_of(sim, body_);
     if (ball_alive(sim)) {
-        const Body& ball = sim.body(ball_);
+        const Body& ball = body_of(sim, ball_);
         const glm::vec2 d = xz(ball.position) - xz(p.position);
         const float gap = glm::length(d) - ball.radius - p.radius;
         if (gap > s_.push_reach) {
@@ -196,7 +198,7 @@ std::string Walker::push_snowball(Simulation& sim, const glm::vec2& facing) {
         return "snowball pushed (radius " + metres(ball.radius) + ")";
     }
     const glm::vec2 at = xz(p.position) + facing * (p.radius + s_.ball_radius + 0.3f);
-    const auto column = snow_column(sim.world(), at.x, at.y);
+    const auto column = snow_column(world_of(sim), at.x, at.y);
     if (!column) {
         return "no snow ahead to make a snowball on";
     }
@@ -211,20 +213,20 @@ std::string Walker::push_snowball(Simulation& sim, const glm::vec2& facing) {
 }
 
 glm::vec3 Walker::eye(const Simulation& sim) const {
-    const Body& b = sim.body(body_);
+    const Body& b = body_of(sim, body_);
     const auto column = footing(sim, b.position.x, b.position.z);
     const float feet = column ? column->top() : bottom(b);
     return {b.position.x, feet + s_.eye_height, b.position.z};
 }
 
 float Walker::depth_under(const Simulation& sim) const {
-    const Body& b = sim.body(body_);
+    const Body& b = body_of(sim, body_);
     const auto column = footing(sim, b.position.x, b.position.z);
     return column ? column->depth : 0.0f;
 }
 
 float Walker::depth_ahead(const Simulation& sim, const glm::vec2& facing) const {
-    const glm::vec2 at = xz(sim.body(body_).position) + facing;
+    const glm::vec2 at = xz(body_of(sim, body_).position) + facing;
     const auto column = footing(sim, at.x, at.y);
     return column ? column->depth : 0.0f;
 }
@@ -232,7 +234,7 @@ float Walker::depth_ahead(const Simulation& sim, const glm::vec2& facing) const 
 TrailReport Walker::trail(const Simulation& sim) const {
     TrailReport r;
     r.from = trail_.front();
-    r.to = xz(sim.body(body_).position);
+    r.to = xz(body_of(sim, body_).position);
     std::vector<glm::vec2> path = trail_;
     path.push_back(r.to);
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -273,7 +275,7 @@ WalkRoute::WalkRoute(std::vector<glm::vec2> points, float speed)
 
 glm::vec2 WalkRoute::direction(const Simulation& sim, const Walker& walker) {
     const float step = speed_ * sim.config().dt;
-    const glm::vec2 at = xz(sim.body(walker.body()).position);
+    const glm::vec2 at = xz(body_of(sim, walker.body()).position);
     while (!done() && glm::distance(points_[next_], at) <= step) {
         ++next_; // reached (this tick's step would overshoot it)
     }

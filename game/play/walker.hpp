@@ -7,6 +7,8 @@
 
 #include "game/play/snow_readout.hpp"
 
+#include "systems/api/simulation_internals.hpp"
+
 #include <snow/snow.hpp>
 
 #include <glm/vec2.hpp>
@@ -62,7 +64,7 @@ class Walker {
 
     /// The eye: the snow top under the player plus the eye height.
     [[nodiscard]] glm::vec3 eye(const Simulation& sim) const;
-    [[nodiscard]] Entity body() const { return body_; }
+    [[nodiscard]] BodyId body() const { return body_; }
     [[nodiscard]] const WalkerSettings& settings() const { return s_; }
     /// True while the body exists (a reset to before it was added removes it).
     [[nodiscard]] bool alive(const Simulation& sim) const;
@@ -85,8 +87,8 @@ class Walker {
     void roll_snowball(Simulation& sim);
 
     WalkerSettings s_;
-    Entity body_;
-    Entity ball_;
+    BodyId body_;
+    BodyId ball_;
     std::vector<glm::vec2> trail_; ///< where it stood, a point every 0.25 m
 };
 

@@ -1,4 +1,5 @@
 #include "game/run/run_report.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/export/surface_list.hpp"
 #include "systems/core/units.hpp"
@@ -31,9 +32,9 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
     j["mass"] = {{"unit_kg", unit_kg},      {"spawned", m.spawned}, {"airborne", m.airborne},
                  {"settled", m.settled},    {"carried", m.carried}, {"removed", m.removed},
                  {"balanced", m.balanced()}};
-    j["flakes"] = {{"alive", sim.flakes().alive},
-                   {"max_alive", sim.flakes().max_alive},
-                   {"capacity", sim.flakes().capacity()}};
+    j["flakes"] = {{"alive", flake_pool(sim).alive},
+                   {"max_alive", flake_pool(sim).max_alive},
+                   {"capacity", flake_pool(sim).capacity()}};
     j["nonfinite"] = sim.nonfinite_count();
     j["counters"] = {{"landed", c.landed},
                      {"rolled", c.rolled},
@@ -42,7 +43,7 @@ std::string run_report_json(const Simulation& sim, const RunInfo& info) {
                      {"spilled_units", c.spilled_units},
                      {"occlusion_refreshes", c.occlusion_refreshes}};
     auto systems = nlohmann::ordered_json::array();
-    for (const SystemStats& s : sim.schedule().stats()) {
+    for (const SystemStats& s : schedule_of(sim).stats()) {
         systems.push_back(
             {{"name", s.name},
              {"calls", s.calls},
@@ -77,12 +78,12 @@ std::string run_report_text(const Simulation& sim, const RunInfo& info) {
        << "mass units spawned " << m.spawned << " = airborne " << m.airborne << " + settled "
        << m.settled << " + carried " << m.carried << " + removed " << m.removed
        << (m.balanced() ? "  (exact)" : "  (MISMATCH)") << "\n"
-       << "flakes     alive " << sim.flakes().alive << ", max alive " << sim.flakes().max_alive
-       << "\n"
+       << "flakes     alive " << flake_pool(sim).alive << ", max alive "
+       << flake_pool(sim).max_alive << "\n"
        << "nonfinite  " << sim.nonfinite_count() << "\n"
        << "wall       " << info.wall_ms << " ms\n"
        << "system           calls    skipped   total ms   ms/call\n";
-    for (const SystemStats& s : sim.schedule().stats()) {
+    for (const SystemStats& s : schedule_of(sim).stats()) {
         char line[160];
         std::snprintf(line, sizeof line, "%-14s %8llu %10llu %10.2f %9.4f\n", s.name.c_str(),
                       static_cast<unsigned long long>(s.calls),

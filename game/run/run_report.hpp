@@ -2,7 +2,7 @@
 /// @brief The report snow_run prints: state hash, mass balance, per-system cost.
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <string>
 

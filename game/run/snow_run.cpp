@@ -6,7 +6,7 @@
 #include "game/export/snapshot_file.hpp"
 #include "game/export/snow_export.hpp"
 #include "game/run/run_report.hpp"
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include <chrono>
 #include <cstdio>

@@ -5,7 +5,7 @@
 // lie inside the folder.
 #include "game/scene/scene_buffers.hpp"
 
-#include "game/scene/scene_types.hpp"
+#include <snow/scene.hpp>
 
 #include <array>
 #include <filesystem>

@@ -2,6 +2,7 @@
 // (which validates again and throws SimulationError naming the field); what
 // only the renderer reads (meshes, lights, camera, environment) goes to SceneVisuals.
 #include "game/scene/scene_build.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "game/scene/scene_auto_snow.hpp"
 
@@ -89,7 +90,7 @@ SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
 }
 
 /// The node's collider, if it declares one; null otherwise.
-Entity add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
+ColliderId add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
     switch (kind) {
     case ColliderKind::box:
         return sim.add_box(node.bounds);
@@ -103,11 +104,11 @@ Entity add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
     case ColliderKind::capsule:
         break; // always a body: add_body
     }
-    return null_entity;
+    return {};
 }
 
 /// The moving body a node declares, shaped by its bounds.
-Entity add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
+BodyId add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
     BodyDef d;
     const glm::vec3 half = 0.5f * node.bounds.size();
     d.position = 0.5f * (node.bounds.min + node.bounds.max);
@@ -209,7 +210,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         const WorldNode& node = d.geometry.nodes[i];
         const NodeSnow& role = roles[i];
         const std::string prefix = "nodes[" + std::to_string(node.index) + "].extras.snow.";
-        Entity owner = null_entity;
+        ColliderId owner;
         if (is_body(role)) {
             through_facade(prefix, [&] { return add_body(*sim, node, role); });
         } else if (role.collider) {
@@ -248,15 +249,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     if (s.wind_transport) {
         through_facade(declared, [&] { sim->set_wind_transport(*s.wind_transport); });
     }
-    if (s.fog) {
-        through_facade(declared, [&] { sim->set_fog(*s.fog); });
-    }
     if (s.occlusion) {
         through_facade(prefix(d.settings.occlusion.has_value()),
                        [&] { sim->set_occlusion(*s.occlusion); });
-    }
-    if (s.spectral) {
-        through_facade(declared, [&] { sim->set_spectral(*s.spectral); });
     }
     if (s.cover) {
         CoverDef cover = *s.cover;
@@ -264,7 +259,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         through_facade(prefix(d.settings.cover.has_value()), [&] { return sim->add_cover(cover); });
     }
     // After the scene's own camera and the default one mesh colliders bring.
-    if (const auto* cam = sim->world().try_resource<OcclusionCamera>();
+    if (const auto* cam = world_of(*sim).try_resource<OcclusionCamera>();
         cam && o.occlusion_resolution) {
         OcclusionCamera c = *cam;
         c.resolution = *o.occlusion_resolution;
@@ -272,6 +267,8 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     }
     visuals.camera = s.camera.value_or(CameraDef{});
     visuals.environment = s.environment;
+    visuals.fog = s.fog; // render-only, validated with the schema
+    visuals.spectral = s.spectral;
     return sim;
 }
 

@@ -5,7 +5,7 @@
 
 #include "game/scene/scene_geometry.hpp"
 #include "game/scene/scene_schema.hpp"
-#include "game/scene/scene_types.hpp"
+#include <snow/scene.hpp>
 
 #include <memory>
 #include <optional>

@@ -5,7 +5,7 @@
 //   → create the simulation.
 // Any failure is one message "<file>: <field> <problem>" and no Simulation
 // (never a partly built one).
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include "game/scene/scene_buffers.hpp"
 #include "game/scene/scene_build.hpp"

@@ -7,6 +7,7 @@
 // functions check the rest, and their messages are prefixed with the JSON path.
 #include "game/scene/scene_schema.hpp"
 
+#include "render/visual_rules.hpp"
 #include "systems/api/validation.hpp"
 
 #include <cmath>
@@ -231,7 +232,8 @@ constexpr Field<AssetSnow> asset_snow_fields[] = {
 };
 
 /// Reads one scene's `extras.snow` and checks its effects with the
-/// simulation's validate() functions.
+/// simulation's (and, for fog and spectral snow, the renderer's) validate()
+/// functions.
 SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     const SceneSnow s = read_struct(j, path, scene_snow_fields, reject);
     check_valid(validate(s.config), path);

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "game/scene/scene_fields.hpp"
-#include "render/scene_visuals.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
+#include <snow/render.hpp>
 
 #include <cstdint>
 #include <optional>

@@ -3,11 +3,79 @@
 /// load_scene_memory turn a glTF 2.0 file (.gltf or .glb) whose `extras.snow`
 /// objects declare surfaces, colliders, moving bodies, a cover and effects
 /// (or, with auto snow, a plain model's meshes imply them) into a Simulation
-/// and its SceneVisuals (meshes, lights, camera, sky), with SceneOverrides for
-/// command-line settings. See docs/scenes.md and
-/// docs/embedding.md.
+/// and its SceneVisuals (meshes, lights, camera, sky, fog), with
+/// SceneOverrides for command-line settings. Self-contained: the standard
+/// library and GLM. See docs/scenes.md and docs/embedding.md.
 #pragma once
 
-#include "game/scene/scene_loader.hpp"
+#include <glm/vec3.hpp>
 
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <snow/render.hpp>
 #include <snow/snow.hpp>
+
+namespace snow {
+
+/// Values that replace the scene's own `simulation` settings (command line).
+struct SceneOverrides {
+    std::optional<std::uint64_t> seed;
+    std::optional<float> dt;
+    std::optional<unsigned> threads;
+    std::optional<Integrator> integrator;
+    std::optional<std::uint32_t> max_flakes;
+    /// Multiplies every surface's cell edge (quality presets, docs/accuracy.md).
+    std::optional<float> cell_scale;
+    /// Replaces the occlusion camera's resolution; ignored when the scene has none.
+    std::optional<std::uint32_t> occlusion_resolution;
+    /// Replaces SimConfig::smoothing_iterations.
+    std::optional<std::uint32_t> smoothing_iterations;
+    /// Replaces the file's `extras.snow.auto`: true fills in mesh colliders, an
+    /// occlusion camera, a cover, an emitter and a camera where the scene
+    /// declares none (docs/scenes.md#snow-on-a-plain-scene).
+    std::optional<bool> auto_snow;
+    /// Replaces the global wind's mean (m/s); the scene's random walk and
+    /// gusts stay (a scene without wind gets the default walk).
+    std::optional<glm::vec3> wind;
+};
+
+/// Either a ready simulation and its visuals (sim set, error empty) or one
+/// error naming the file and the field (sim null). Never a partly built scene.
+struct SceneLoadResult {
+    std::unique_ptr<Simulation> sim;
+    SceneVisuals visuals; ///< meshes, lights, camera, sky: what the renderer draws
+    std::string error;
+    std::string name; ///< the glTF scene's name, else the file's stem
+    /// What the loader skipped ("<file>: <field> <problem>": a missing texture
+    /// image, a non-triangle primitive, ...); each is also printed to stderr.
+    std::vector<std::string> warnings;
+};
+
+/// Largest glTF JSON accepted (a .gltf file, or a .glb's JSON chunk; bytes).
+inline constexpr std::size_t max_scene_bytes = 64u << 20;
+/// Largest total size of the buffers of one scene (bytes): external files,
+/// data URIs and a .glb's BIN chunk.
+inline constexpr std::size_t max_scene_buffer_bytes = 256u << 20;
+/// Largest scene file accepted (bytes); larger files are rejected unread.
+inline constexpr std::size_t max_scene_file_bytes = max_scene_bytes + max_scene_buffer_bytes;
+
+/// Loads a .gltf or .glb file (told apart by the .glb magic; a file named
+/// `.glb` must have it). Buffers come from data URIs, the .glb's BIN chunk or
+/// files inside the scene file's own folder.
+[[nodiscard]] SceneLoadResult load_scene_file(const std::string& path,
+                                              const SceneOverrides& overrides = {});
+
+/// Loads .gltf text or .glb bytes from memory; no file may be read, so
+/// buffers come from data URIs or the BIN chunk. `name_for_errors` prefixes
+/// every error and warning.
+[[nodiscard]] SceneLoadResult load_scene_memory(std::string_view bytes,
+                                                std::string_view name_for_errors,
+                                                const SceneOverrides& overrides = {});
+
+} // namespace snow

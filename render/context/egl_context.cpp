@@ -1,6 +1,6 @@
 #include "render/context/egl_context.hpp"
 
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #include <glad/gl.h>
 

@@ -4,7 +4,7 @@
 /// once Mesa drops it (removed upstream in 25.1).
 #pragma once
 
-#include "render/context/gl_context.hpp"
+#include <snow/render.hpp>
 
 namespace snow {
 

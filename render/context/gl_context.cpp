@@ -1,6 +1,6 @@
-#include "render/context/gl_context.hpp"
+#include <snow/render.hpp>
 
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #include <glad/gl.h>
 

@@ -1,6 +1,6 @@
 #include "render/context/glfw_context.hpp"
 
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -2,8 +2,7 @@
 /// @brief GL 3.3 core context in a GLFW window (X11 via GLX, or Xvfb).
 #pragma once
 
-#include "render/context/context_request.hpp"
-#include "render/context/gl_context.hpp"
+#include <snow/render.hpp>
 
 struct GLFWwindow;
 

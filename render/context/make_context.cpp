@@ -1,11 +1,11 @@
-#include "render/context/make_context.hpp"
+#include <snow/render.hpp>
 
 #ifdef SNOW_RENDER_EGL
 #include "render/context/egl_context.hpp"
 #endif
 #include "render/context/glfw_context.hpp"
 #include "render/context/osmesa_context.hpp"
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #include <iostream>
 

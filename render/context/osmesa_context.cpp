@@ -1,6 +1,6 @@
 #include "render/context/osmesa_context.hpp"
 
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #include <GL/osmesa.h>
 

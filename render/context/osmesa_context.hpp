@@ -3,7 +3,7 @@
 /// into a CPU buffer, needs no display. The default in tests.
 #pragma once
 
-#include "render/context/gl_context.hpp"
+#include <snow/render.hpp>
 
 #include <cstdint>
 #include <vector>

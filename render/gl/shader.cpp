@@ -1,7 +1,7 @@
 #include "render/gl/shader.hpp"
 
+#include "render/gl/shader_error.hpp"
 #include "render/gl/shader_sources.hpp"
-#include "render/render_error.hpp"
 
 #include <glad/gl.h>
 

@@ -11,18 +11,18 @@
 #pragma once
 
 #include "ecs/world.hpp"
-#include "render/render_settings.hpp"
+#include <snow/render.hpp>
 
 #include <optional>
 
 namespace snow {
 
-/// The hand-over distance (m) of a world with valid SpectralSnow: its
+/// The hand-over distance (m) of visuals with a spectral layer: its
 /// start_distance, or the flakes' lod_distance where that is nearer. The same
 /// on every GL, level of detail on or off, so a scene looks alike everywhere.
 /// Empty without the layer, or for a start of 0 (the layer everywhere:
 /// nothing to hand over).
-[[nodiscard]] std::optional<float> far_field_handover(const World& world,
+[[nodiscard]] std::optional<float> far_field_handover(const SceneVisuals& visuals,
                                                       const RenderSettings& settings);
 
 } // namespace snow

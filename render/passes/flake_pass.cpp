@@ -26,7 +26,7 @@ void FlakePass::run(const World& world, FrameContext& frame) {
     sel.lod_distance = frame.settings.lod_distance;
     // With far-field snow the flakes thin out beyond the hand-over as the layer
     // takes their place (far_field.hpp), level of detail or not.
-    if (const std::optional<float> handover = far_field_handover(world, frame.settings)) {
+    if (const std::optional<float> handover = far_field_handover(frame.visuals, frame.settings)) {
         sel.lod = true;
         sel.lod_distance = *handover;
     }

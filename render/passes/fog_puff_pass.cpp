@@ -1,7 +1,7 @@
 #include "render/passes/fog_puff_pass.hpp"
 
 #include "render/gl/fullscreen.hpp"
-#include "render/render_error.hpp"
+#include <snow/error.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -45,13 +45,12 @@ constexpr std::size_t probe_batch = 1024;
 
 } // namespace
 
-bool FogPuffPass::wanted(const World& world, const SceneVisuals&) const {
-    const Fog* fog = world.try_resource<Fog>();
-    return fog != nullptr && !fog->puffs.empty();
+bool FogPuffPass::wanted(const World& /*world*/, const SceneVisuals& visuals) const {
+    return visuals.fog && !visuals.fog->puffs.empty();
 }
 
-void FogPuffPass::run(const World& world, FrameContext& frame) {
-    const Fog& fog = world.resource<Fog>();
+void FogPuffPass::run(const World& /*world*/, FrameContext& frame) {
+    const Fog& fog = *frame.visuals.fog;
     if (fog.puffs.size() > max_drawn_puffs && !cap_reported_) {
         std::fprintf(stderr, "snow: fog has %zu puffs; the first %zu are drawn\n", fog.puffs.size(),
                      max_drawn_puffs);

@@ -6,7 +6,7 @@
 /// runs that shader code on given segments (the only function here needing GL).
 #pragma once
 
-#include "systems/api/fog.hpp"
+#include <snow/render.hpp>
 
 #include <glm/vec3.hpp>
 

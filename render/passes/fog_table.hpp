@@ -4,7 +4,7 @@
 /// 1-D table of the density's integral.
 #pragma once
 
-#include "systems/api/fog.hpp"
+#include <snow/render.hpp>
 
 #include <glm/vec2.hpp>
 

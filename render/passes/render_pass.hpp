@@ -4,11 +4,8 @@
 #pragma once
 
 #include "ecs/world.hpp"
-#include "render/camera.hpp"
-#include "render/frame_timings.hpp"
 #include "render/gl/shader.hpp"
-#include "render/render_settings.hpp"
-#include "render/scene_visuals.hpp"
+#include <snow/render.hpp>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

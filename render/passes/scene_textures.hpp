@@ -4,8 +4,8 @@
 #pragma once
 
 #include "render/gl/gl_objects.hpp"
-#include "systems/api/fog.hpp"
 #include "systems/sky/occlusion.hpp"
+#include <snow/render.hpp>
 
 #include <cstdint>
 #include <vector>

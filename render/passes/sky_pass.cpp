@@ -1,11 +1,9 @@
 #include "render/passes/sky_pass.hpp"
 
-#include "systems/api/fog.hpp"
-
 namespace snow {
 
-bool SkyPass::wanted(const World& world, const SceneVisuals&) const {
-    return world.has_resource<Fog>();
+bool SkyPass::wanted(const World& /*world*/, const SceneVisuals& visuals) const {
+    return visuals.fog.has_value();
 }
 
 void SkyPass::run(const World& /*world*/, FrameContext& frame) {

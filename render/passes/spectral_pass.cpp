@@ -3,7 +3,7 @@
 #include "render/gl/fullscreen.hpp"
 #include "render/passes/far_field.hpp"
 #include "render/passes/spectral_volume.hpp"
-#include "systems/api/validation.hpp"
+#include "render/visual_rules.hpp"
 #include "systems/core/sim_config.hpp"
 #include "systems/flakes/emitter.hpp"
 #include "systems/wind/wind.hpp"
@@ -87,8 +87,8 @@ float particle_fall_speed(const World& world) {
 
 } // namespace
 
-bool SpectralPass::wanted(const World& world, const SceneVisuals&) const {
-    return world.has_resource<SpectralSnow>();
+bool SpectralPass::wanted(const World& /*world*/, const SceneVisuals& visuals) const {
+    return visuals.spectral.has_value();
 }
 
 void SpectralPass::build(const SpectralSnow& s, std::uint64_t seed) {
@@ -115,7 +115,7 @@ void SpectralPass::build(const SpectralSnow& s, std::uint64_t seed) {
 }
 
 void SpectralPass::run(const World& world, FrameContext& frame) {
-    const SpectralSnow& s = world.resource<SpectralSnow>();
+    const SpectralSnow& s = *frame.visuals.spectral;
     if (const Invalid error = validate(s); !error.empty()) {
         if (!invalid_reported_) { // said once, like the renderer's other bad-input notes
             std::fprintf(stderr, "snow: spectral snow not drawn: %s\n", error.text().c_str());
@@ -130,7 +130,7 @@ void SpectralPass::run(const World& world, FrameContext& frame) {
     }
     // The layer takes over from the flakes at the hand-over distance (a start
     // of 0: everywhere), and its nearest band falls like a flake there.
-    const float start = far_field_handover(world, frame.settings).value_or(0.0f);
+    const float start = far_field_handover(frame.visuals, frame.settings).value_or(0.0f);
     SpectralSnow mapped = s;
     mapped.start_distance = start;
     const float fall = particle_fall_speed(world);

@@ -8,7 +8,7 @@
 #include "render/gl/gl_objects.hpp"
 #include "render/passes/render_pass.hpp"
 #include "render/passes/scene_depth.hpp"
-#include "systems/api/spectral_snow.hpp"
+#include <snow/render.hpp>
 
 #include <cstdint>
 #include <optional>

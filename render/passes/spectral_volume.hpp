@@ -6,7 +6,7 @@
 #pragma once
 
 #include "render/passes/fft.hpp"
-#include "systems/api/spectral_snow.hpp"
+#include <snow/render.hpp>
 
 #include <cstdint>
 #include <vector>

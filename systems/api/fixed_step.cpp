@@ -1,4 +1,4 @@
-#include "systems/api/fixed_step.hpp"
+#include <snow/snow.hpp>
 
 #include "systems/core/field_rules.hpp"
 

@@ -1,11 +1,11 @@
 // The Simulation's state as a whole: what state_hash() covers and what
-// save()/restore() carry. A tick changes the clock, the ledger, the counters,
+// save_snapshot()/restore_snapshot() carry. A tick changes the clock, the ledger, the counters,
 // the flake pool, the wind, the surfaces' snow (its compaction and the cells
 // waiting for smoothing), each cover's base (it follows the geometry, in as
 // many ticks as the flake pool allows), the bodies and the occlusion map;
 // everything else is source data (source_versions.hpp), hashed but not saved,
 // or a cache rebuilt from it.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "ecs/state_hash.hpp"
 #include "systems/geometry/colliders.hpp"
@@ -277,7 +277,7 @@ std::uint64_t source_digest(const World& w) {
     return h.digest();
 }
 
-/// Throws, before restore() changes anything, unless the world holds a
+/// Throws, before restore_snapshot() changes anything, unless the world holds a
 /// component T on exactly the entities the snapshot saved one for.
 template <typename T>
 void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& saved,
@@ -297,97 +297,101 @@ void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& save
 } // namespace
 
 std::uint64_t Simulation::state_hash() const {
+    const World& world = impl_->world;
     StateHasher h;
-    h.value(world_.resource<SimClock>().tick);
-    hash_config(h, world_.resource<SimConfig>());
-    hash_ledger(h, world_.resource<MassLedger>());
-    hash_counters(h, world_.resource<SimCounters>());
-    hash_pool(h, world_.resource<FlakePool>());
-    hash_wind(h, world_.try_resource<Wind>());
-    hash_wind_field(h, world_.try_resource<WindField>());
-    hash_emitters(h, world_);
-    hash_snow(h, world_);
-    hash_covers(h, world_);
-    hash_bodies(h, world_);
-    hash_occlusion(h, world_);
-    const SourceVersions versions = source_versions(world_);
-    if (!source_digest_.valid || source_digest_.of != versions) {
-        source_digest_ = {true, versions, source_digest(world_)};
+    h.value(world.resource<SimClock>().tick);
+    hash_config(h, world.resource<SimConfig>());
+    hash_ledger(h, world.resource<MassLedger>());
+    hash_counters(h, world.resource<SimCounters>());
+    hash_pool(h, world.resource<FlakePool>());
+    hash_wind(h, world.try_resource<Wind>());
+    hash_wind_field(h, world.try_resource<WindField>());
+    hash_emitters(h, world);
+    hash_snow(h, world);
+    hash_covers(h, world);
+    hash_bodies(h, world);
+    hash_occlusion(h, world);
+    const SourceVersions versions = source_versions(world);
+    Impl::SourceDigest& digest = impl_->sources_digest;
+    if (!digest.valid || digest.of != versions) {
+        digest = {true, versions, source_digest(world)};
     }
-    h.value(source_digest_.value);
+    h.value(digest.value);
     return h.digest();
 }
 
-std::uint64_t Simulation::scene_fingerprint() const {
+std::uint64_t Simulation::Impl::scene_fingerprint() const {
     StateHasher h;
-    hash_config(h, world_.resource<SimConfig>());
-    h.value(source_digest(world_));
+    hash_config(h, world.resource<SimConfig>());
+    h.value(source_digest(world));
     return h.digest();
 }
 
-std::unique_ptr<Snapshot> Simulation::save() const {
+std::unique_ptr<Snapshot> save_snapshot(const Simulation& sim) {
+    const World& world = world_of(sim);
     auto s = std::make_unique<Snapshot>();
-    s->flakes = world_.resource<FlakePool>();
-    s->clock = world_.resource<SimClock>();
-    s->ledger = world_.resource<MassLedger>();
-    s->counters = world_.resource<SimCounters>();
-    if (const auto* w = world_.try_resource<Wind>()) {
+    s->flakes = world.resource<FlakePool>();
+    s->clock = world.resource<SimClock>();
+    s->ledger = world.resource<MassLedger>();
+    s->counters = world.resource<SimCounters>();
+    if (const auto* w = world.try_resource<Wind>()) {
         s->wind = *w;
     }
-    if (const auto* f = world_.try_resource<WindField>()) {
+    if (const auto* f = world.try_resource<WindField>()) {
         s->wind_field = *f;
     }
-    if (const auto* map = world_.try_resource<OcclusionMap>(); map != nullptr && map->built) {
+    if (const auto* map = world.try_resource<OcclusionMap>(); map != nullptr && map->built) {
         s->sky_map = *map;
     }
-    world_.each<SnowSurface>(
+    world.each<SnowSurface>(
         [&](Entity e, const SnowSurface& surf) { s->surfaces.emplace_back(e, surf); });
-    world_.each<SnowCover>([&](Entity e, const SnowCover& c) { s->covers.emplace_back(e, c); });
-    world_.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
+    world.each<SnowCover>([&](Entity e, const SnowCover& c) { s->covers.emplace_back(e, c); });
+    world.each<Body>([&](Entity e, const Body& b) { s->bodies.emplace_back(e, b); });
     return s;
 }
 
-void Simulation::restore(const Snapshot& s) {
-    if (s.flakes.capacity() != world_.resource<FlakePool>().capacity()) {
+void restore_snapshot(Simulation& sim, const Snapshot& s) {
+    World& world = InternalAccess::world(sim);
+    if (s.flakes.capacity() != world.resource<FlakePool>().capacity()) {
         throw SimulationError("restore: snapshot belongs to a different scene (flake capacity)");
     }
-    same_entities(world_, s.surfaces, "surface");
-    same_entities(world_, s.covers, "cover");
-    same_entities(world_, s.bodies, "body");
-    FlakePool& pool = world_.resource<FlakePool>();
+    same_entities(world, s.surfaces, "surface");
+    same_entities(world, s.covers, "cover");
+    same_entities(world, s.bodies, "body");
+    FlakePool& pool = world.resource<FlakePool>();
     pool = s.flakes;
     pool.free_stack.reserve(pool.capacity()); // keep release() allocation-free
-    world_.resource<SimClock>() = s.clock;
-    world_.resource<MassLedger>() = s.ledger;
-    world_.resource<SimCounters>() = s.counters;
+    world.resource<SimClock>() = s.clock;
+    world.resource<MassLedger>() = s.ledger;
+    world.resource<SimCounters>() = s.counters;
     if (!s.wind) {
-        world_.erase_resource<Wind>();
-    } else if (auto* w = world_.try_resource<Wind>()) {
+        world.erase_resource<Wind>();
+    } else if (auto* w = world.try_resource<Wind>()) {
         *w = *s.wind;
     } else {
-        world_.set_resource<Wind>(*s.wind);
+        world.set_resource<Wind>(*s.wind);
     }
     if (s.wind_field) {
         // The solver is rebuilt: its next build applies the obstacles to the
         // restored velocities, as the saved run did when the solids changed.
-        world_.erase_resource<WindFieldSolver>();
-        world_.set_resource<WindField>(*s.wind_field);
+        world.erase_resource<WindFieldSolver>();
+        world.set_resource<WindField>(*s.wind_field);
     } else {
-        clear_wind_field();
+        sim.clear_wind_field();
     }
     // The map's texels are rewritten: its version moves on past every one a
     // cache may have seen (it never goes back), whatever the saved one was.
-    auto* map = world_.try_resource<OcclusionMap>();
+    auto* map = world.try_resource<OcclusionMap>();
     if (s.sky_map || map != nullptr) {
         const std::uint64_t seen = map != nullptr ? map->version : 0;
         if (map == nullptr) {
-            map = &world_.set_resource<OcclusionMap>();
+            map = &world.set_resource<OcclusionMap>();
         }
         *map = s.sky_map ? *s.sky_map : OcclusionMap{};
         map->version = std::max(seen, s.sky_map ? s.sky_map->version : 0) + 1;
     }
     for (const auto& [e, surf] : s.surfaces) {
-        SnowSurface& now = world_.get<SnowSurface>(e);
+        SnowSurface& now = world.get<SnowSurface>(e);
         // A cover's base may differ from the saved one: then its version moves
         // on past both (it never goes back), so no cache of it matches by accident.
         const std::uint64_t seen = now.base_version;
@@ -396,10 +400,10 @@ void Simulation::restore(const Snapshot& s) {
         now.base_version = same_base ? seen : std::max(seen, surf.base_version) + 1;
     }
     for (const auto& [e, cover] : s.covers) {
-        world_.get<SnowCover>(e) = cover;
+        world.get<SnowCover>(e) = cover;
     }
     for (const auto& [e, body] : s.bodies) {
-        world_.get<Body>(e) = body;
+        world.get<Body>(e) = body;
     }
 }
 

@@ -6,13 +6,13 @@
 #include "systems/bodies/body.hpp"
 #include "systems/core/mass_ledger.hpp"
 #include "systems/core/sim_config.hpp"
-#include "systems/core/sim_counters.hpp"
 #include "systems/flakes/flake_pool.hpp"
 #include "systems/sky/occlusion.hpp"
 #include "systems/snowpack/snow_cover.hpp"
 #include "systems/snowpack/snow_surface.hpp"
 #include "systems/wind/wind.hpp"
 #include "systems/wind/wind_field.hpp"
+#include <snow/views.hpp>
 
 #include <optional>
 #include <utility>

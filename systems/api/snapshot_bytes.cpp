@@ -1,10 +1,10 @@
 // Byte snapshots (Simulation::save_bytes / load_bytes): the Snapshot of
-// save() as versioned bytes for save games, replays and lockstep. Layout
+// save_snapshot() as versioned bytes for save games, replays and lockstep. Layout
 // (docs/embedding.md "Snapshots"): magic, format version, payload length,
 // a tag of the constants that shape the state, the scene's fingerprint, the
 // payload (one record per stateful type, each written beside its type,
 // gathered in the order below) and an FNV-1a checksum of all that precedes it.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "ecs/state_hash.hpp"
 #include "systems/api/validation.hpp"
@@ -111,9 +111,10 @@ void require_valid(const ByteReader& in, const Invalid& bad) {
 
 } // namespace
 
-// Written straight from the world, in save()'s order and extent (no copy
+// Written straight from the world, in save_snapshot()'s order and extent (no copy
 // of the state first).
 std::vector<std::byte> Simulation::save_bytes() const {
+    const World& world = impl_->world;
     ByteWriter out;
     for (const char c : snapshot_magic) {
         out(c);
@@ -122,17 +123,18 @@ std::vector<std::byte> Simulation::save_bytes() const {
     out(std::uint64_t{0}); // payload length, filled in below
     const std::size_t payload_at = out.bytes().size();
     out(build_tag());
-    out(scene_fingerprint());
+    out(impl_->scene_fingerprint());
     out(tick_count());
-    save_ledger(out, world_.resource<MassLedger>(), counters());
-    save_state(out, flakes());
-    save_optional(out, world_.try_resource<Wind>());
-    save_optional(out, world_.try_resource<WindField>());
-    const auto* map = world_.try_resource<OcclusionMap>();
-    save_optional(out, map != nullptr && map->built ? map : nullptr); // as save(): only a built map
-    save_each<SnowSurface>(out, world_);
-    save_each<SnowCover>(out, world_);
-    save_each<Body>(out, world_);
+    save_ledger(out, world.resource<MassLedger>(), counters());
+    save_state(out, world.resource<FlakePool>());
+    save_optional(out, world.try_resource<Wind>());
+    save_optional(out, world.try_resource<WindField>());
+    const auto* map = world.try_resource<OcclusionMap>();
+    save_optional(
+        out, map != nullptr && map->built ? map : nullptr); // as save_snapshot(): only a built map
+    save_each<SnowSurface>(out, world);
+    save_each<SnowCover>(out, world);
+    save_each<Body>(out, world);
     std::vector<std::byte>& bytes = out.bytes();
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
@@ -141,6 +143,7 @@ std::vector<std::byte> Simulation::save_bytes() const {
 }
 
 void Simulation::load_bytes(std::span<const std::byte> bytes) {
+    const World& world = impl_->world;
     ByteReader head(bytes);
     if (bytes.size() < header_bytes + checksum_bytes) {
         head.fail("is cut short (" + std::to_string(bytes.size()) +
@@ -177,7 +180,7 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
     in(tag);
     in.require(tag == build_tag(), "was written by a build with other simulation constants");
     in(scene);
-    in.require(scene == scene_fingerprint(),
+    in.require(scene == impl_->scene_fingerprint(),
                "belongs to a different scene or settings (its fingerprint differs)");
     Snapshot s;
     in.record("clock");
@@ -185,7 +188,7 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
     in.record("ledger");
     load_ledger(in, s.ledger, s.counters);
     in.record("flakes");
-    s.flakes.reset(world_.resource<FlakePool>().capacity());
+    s.flakes.reset(world.resource<FlakePool>().capacity());
     load_state(in, s.flakes);
     in.record("wind");
     bool wind = false;
@@ -213,12 +216,12 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
     if (map) {
         load_state(in, s.sky_map.emplace());
     }
-    load_each(in, world_, "surfaces", s.surfaces,
+    load_each(in, world, "surfaces", s.surfaces,
               [&](Entity, SnowSurface& surface) { load_state(in, surface); });
-    load_each(in, world_, "covers", s.covers, [&](Entity e, SnowCover& cover) {
-        load_state(in, cover, world_.get<SnowSurface>(e).cell_count());
+    load_each(in, world, "covers", s.covers, [&](Entity e, SnowCover& cover) {
+        load_state(in, cover, world.get<SnowSurface>(e).cell_count());
     });
-    load_each(in, world_, "bodies", s.bodies, [&](Entity, Body& body) { load_state(in, body); });
+    load_each(in, world, "bodies", s.bodies, [&](Entity, Body& body) { load_state(in, body); });
     in.record("");
     in.require(in.left() == 0, "has bytes after its last record");
 
@@ -231,7 +234,7 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
         held += body.carried;
     }
     in.require(held == s.ledger.spawned, "does not account for every unit of snow it spawned");
-    restore(s);
+    restore_snapshot(*this, s);
 }
 
 } // namespace snow

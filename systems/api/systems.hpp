@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ecs/world.hpp"
-#include "systems/core/sim_counters.hpp"
+#include <snow/views.hpp>
 
 namespace snow {
 

@@ -4,8 +4,6 @@
 /// its header, validate() in its source) and names the field at fault.
 #pragma once
 
-#include "systems/api/fog.hpp"
-#include "systems/api/spectral_snow.hpp"
 #include "systems/bodies/body.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/sim_config.hpp"

@@ -6,7 +6,7 @@
 /// JSON by walking the same table (internal to snow::sim).
 #pragma once
 
-#include "systems/core/simulation_error.hpp"
+#include "ecs/error.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -1,8 +1,11 @@
 /// @file mass_ledger.hpp
-/// @brief Exact snow-mass bookkeeping in integer units (docs/design.md "Mass").
+/// @brief Exact snow-mass bookkeeping in integer units (docs/design.md "Mass");
+/// Simulation::mass() reports it as a MassReport (<snow/views.hpp>).
 #pragma once
 
 #include <cstdint>
+
+#include <snow/views.hpp>
 
 namespace snow {
 
@@ -16,19 +19,6 @@ struct MassLedger {
     std::uint64_t removed_surface = 0; ///< on a surface or snowball the embedder removed
     [[nodiscard]] std::uint64_t removed() const {
         return removed_bounds + removed_sphere + removed_bare + removed_surface;
-    }
-};
-
-/// The invariant `spawned == airborne + settled + carried + removed`, all in
-/// units; `carried` is the snow snowballs picked up.
-struct MassReport {
-    std::uint64_t spawned = 0;
-    std::uint64_t airborne = 0;
-    std::uint64_t settled = 0;
-    std::uint64_t carried = 0;
-    std::uint64_t removed = 0;
-    [[nodiscard]] bool balanced() const {
-        return spawned == airborne + settled + carried + removed;
     }
 };
 

@@ -5,7 +5,7 @@
 /// same on every platform snow runs on (x86-64, aarch64).
 #pragma once
 
-#include "systems/core/simulation_error.hpp"
+#include "ecs/error.hpp"
 
 #include <glm/vec3.hpp>
 

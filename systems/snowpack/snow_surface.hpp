@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <snow/defs.hpp>
+#include <snow/views.hpp>
 
 namespace snow {
 
@@ -59,7 +60,7 @@ struct CellBox {
 /// Base level of a cell with nothing under it (a cover's column that lies
 /// outside all geometry or under a declared surface): it never catches a
 /// flake and its edges are closed, so no snow ever reaches it.
-inline constexpr std::int64_t void_level = std::numeric_limits<std::int64_t>::min() / 4;
+inline constexpr std::int64_t void_level = no_ground_level;
 
 /// How many times denser than fresh snow the most packed snow is.
 inline constexpr std::uint32_t max_packing = 4;
@@ -136,15 +137,11 @@ struct SnowSurface {
     }
     /// World height (m) of a level, rounded once from double (as every user of
     /// heights compares them).
-    [[nodiscard]] float height(std::int64_t lvl) const {
-        return static_cast<float>(static_cast<double>(lvl) * unit_height);
-    }
+    [[nodiscard]] float height(std::int64_t lvl) const { return level_height(lvl, unit_height); }
     /// World height (m) of the snow top of cell i.
     [[nodiscard]] float top_y(std::size_t i) const { return height(level(i)); }
     /// Snow depth (m) of cell i.
-    [[nodiscard]] float depth(std::size_t i) const {
-        return static_cast<float>(static_cast<double>(depth_levels(i)) * unit_height);
-    }
+    [[nodiscard]] float depth(std::size_t i) const { return height(depth_levels(i)); }
     /// Lowers cell i's snow by `levels` without moving a unit (a body packs
     /// it); `levels` <= max_compaction(snow[i]) - compacted[i].
     void compact(std::size_t i, std::uint32_t levels);

@@ -4,7 +4,7 @@
 /// cell statistics, and the reduced counts used in sanitizer/Debug builds.
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -56,8 +56,8 @@ inline std::uint32_t place_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, floa
 }
 
 /// The SnowSurface component of a surface entity.
-[[nodiscard]] inline const SnowSurface& surface(const Simulation& sim, Entity e) {
-    return sim.surface(e);
+[[nodiscard]] inline const SnowSurface& surface(const Simulation& sim, SurfaceId e) {
+    return snow_surface(sim, e);
 }
 
 /// Summary of a surface's settled snow.

@@ -4,6 +4,7 @@
 // ever be strictly inside the box after a tick, nothing may become NaN, the
 // mass stays exact, and in the end every flake has landed or been removed.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <string>
 #include <vector>
@@ -73,8 +74,8 @@ TEST(HardCaseBoxContact, FlakesBornOnFacesEdgesAndCornersNeverEndInside) {
         g.size_x = g.size_z = 8.0f;
         g.cell = 0.1f;
         g.spills = false;
-        const Entity ground = sim.add_surface(g);
-        const Entity solid = sim.add_box(box);
+        const SurfaceId ground = sim.add_surface(g);
+        const ColliderId solid = sim.add_box(box);
         SurfaceDef r;
         r.x0 = box.min.x;
         r.z0 = box.min.z;
@@ -82,7 +83,7 @@ TEST(HardCaseBoxContact, FlakesBornOnFacesEdgesAndCornersNeverEndInside) {
         r.cell = 0.1f;
         r.base_y = box.max.y;
         r.spills = false;
-        const Entity roof = sim.add_surface(r, solid);
+        const SurfaceId roof = sim.add_surface(r, solid);
 
         std::uint32_t placed = 0;
         // The roof covers [min, max) on x and z, like every grid: the top's
@@ -99,7 +100,7 @@ TEST(HardCaseBoxContact, FlakesBornOnFacesEdgesAndCornersNeverEndInside) {
                 ++placed;
             }
         }
-        const FlakePool& f = sim.flakes();
+        const FlakePool& f = flake_pool(sim);
         for (int t = 0; t < 600; ++t) {
             sim.tick();
             ASSERT_TRUE(hard::healthy(sim));
@@ -110,7 +111,7 @@ TEST(HardCaseBoxContact, FlakesBornOnFacesEdgesAndCornersNeverEndInside) {
             }
         }
         EXPECT_EQ(f.alive, 0u) << "flakes still in the air (stuck on a face?)";
-        const auto& ledger = sim.world().resource<MassLedger>();
+        const auto& ledger = world_of(sim).resource<MassLedger>();
         const std::uint64_t roof_units = hard::cell_stats(hard::surface(sim, roof)).sum;
         const std::uint64_t ground_units = hard::cell_stats(hard::surface(sim, ground)).sum;
         EXPECT_GT(roof_units, 0u);

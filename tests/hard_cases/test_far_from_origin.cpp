@@ -9,6 +9,7 @@
 // border or rolled ([ZCL §IV] rules) over a different neighbour: the
 // tolerances below bound that, and the ledger balances exactly in both.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "tests/scenes/sample_scenes.hpp"
 
@@ -22,7 +23,7 @@ namespace {
 
 struct Yard {
     std::unique_ptr<Simulation> sim;
-    Entity ground, roof;
+    SurfaceId ground, roof;
 };
 
 /// The sample yard (tests/scenes/sample_scenes.cpp) with every coordinate moved by
@@ -42,7 +43,7 @@ Yard yard_at(const glm::vec3& o, std::uint32_t flakes) {
     ground.spills = false;
     y.ground = y.sim->add_surface(ground);
     const Aabb garage{o + glm::vec3{-1.0f, 0.0f, -1.5f}, o + glm::vec3{2.0f, 2.5f, 1.5f}};
-    const Entity box = y.sim->add_box(garage);
+    const ColliderId box = y.sim->add_box(garage);
     SurfaceDef roof;
     roof.x0 = garage.min.x;
     roof.z0 = garage.min.z;
@@ -149,7 +150,7 @@ TwinRun run_twins(const glm::vec3& offset, std::uint32_t flakes) {
         if (t % 60 == 0) {
             EXPECT_TRUE(hard::healthy(*near.sim));
             EXPECT_TRUE(hard::healthy(*far.sim));
-            const float gap = p99_gap(near.sim->flakes(), far.sim->flakes(), offset, gaps);
+            const float gap = p99_gap(flake_pool(*near.sim), flake_pool(*far.sim), offset, gaps);
             out.max_p99_gap = std::max(out.max_p99_gap, gap);
             out.worst_p99_excess =
                 std::max(out.worst_p99_excess, gap - 0.5f * ulp * static_cast<float>(t));
@@ -157,7 +158,7 @@ TwinRun run_twins(const glm::vec3& offset, std::uint32_t flakes) {
     }
     EXPECT_TRUE(hard::healthy(*near.sim));
     EXPECT_TRUE(hard::healthy(*far.sim));
-    EXPECT_EQ(near.sim->flakes().alive + far.sim->flakes().alive, 0u) << "snow still falling";
+    EXPECT_EQ(flake_pool(*near.sim).alive + flake_pool(*far.sim).alive, 0u) << "snow still falling";
     out.ground =
         compare(hard::surface(*near.sim, near.ground), hard::surface(*far.sim, far.ground), 8);
     out.roof = compare(hard::surface(*near.sim, near.roof), hard::surface(*far.sim, far.roof), 10);

@@ -5,6 +5,7 @@
 // Laplacian of 4000 units against the cap of 2500 [WF §3], so every
 // landing is smoothed; the shed's roof spills clumps cut into <= 1000 units.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "systems/core/units.hpp"
 
@@ -13,8 +14,8 @@ namespace {
 
 struct HeavyScene {
     std::unique_ptr<Simulation> sim;
-    Entity ground;
-    Entity roof;
+    SurfaceId ground;
+    SurfaceId roof;
 };
 
 /// 8 × 8 m still-air yard with a shed, emitting only 5 g flakes at dt = 0.25 s.
@@ -33,7 +34,7 @@ HeavyScene heavy_scene(Integrator integ) {
     ground.spills = false;
     s.ground = s.sim->add_surface(ground);
     const Aabb shed{{-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}};
-    const Entity box = s.sim->add_box(shed);
+    const ColliderId box = s.sim->add_box(shed);
     SurfaceDef roof;
     roof.x0 = roof.z0 = -1.0f;
     roof.size_x = roof.size_z = 2.0f;
@@ -59,12 +60,12 @@ TEST(HardCaseHeavyFlakes, FiveGramFlakesWithQuarterSecondTicksLandWithExactMass)
         for (int t = 0; t < ticks; ++t) {
             sim.tick();
             ASSERT_TRUE(hard::healthy(sim));
-            const FlakePool& f = sim.flakes();
+            const FlakePool& f = flake_pool(sim);
             for (std::uint32_t i = 0; i < f.slot_end; ++i) {
                 ASSERT_LE(f.mass_units[i], max_flake_units) << "slot " << i;
             }
         }
-        const auto& ledger = sim.world().resource<MassLedger>();
+        const auto& ledger = world_of(sim).resource<MassLedger>();
         // Every emitted flake weighs exactly 5 g: the books hold whole 1000-unit flakes.
         EXPECT_GT(ledger.spawned, 0u);
         EXPECT_EQ(ledger.spawned % max_flake_units, 0u);
@@ -104,7 +105,7 @@ TEST(HardCaseHeavyFlakes, FlakeInsideTheSnowLayerLandsEvenWhenItsTickEndsBelowTh
     d.size_x = d.size_z = 2.0f;
     d.cell = 0.05f;
     d.spills = false;
-    const Entity e = sim.add_surface(d);
+    const SurfaceId e = sim.add_surface(d);
     const SnowSurface& s = hard::surface(sim, e);
     std::uint32_t ix = 0, iz = 0;
     ASSERT_TRUE(s.cell_at(0.01f, 0.01f, ix, iz));
@@ -114,7 +115,7 @@ TEST(HardCaseHeavyFlakes, FlakeInsideTheSnowLayerLandsEvenWhenItsTickEndsBelowTh
     hard::place_flake(sim, {0.01f, 0.008f, 0.01f}, {0.0f, -1.28f, 0.0f}, 7.67f, max_flake_units);
     sim.run(2); // missed, it is at y = -0.31 after one tick and out of the bounds after two
     ASSERT_TRUE(hard::healthy(sim));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed(), 0u) << "fell out of the bounds";
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed(), 0u) << "fell out of the bounds";
     EXPECT_EQ(sim.counters().landed, 1u);
     EXPECT_EQ(hard::cell_stats(s).sum, depth_units + max_flake_units);
 }

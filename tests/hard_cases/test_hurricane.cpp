@@ -5,6 +5,7 @@
 // mass exact, no flake may pass through the ground, and the flakes must leave
 // mostly through the downwind (+x) face.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "tests/scenes/sample_scenes.hpp"
 
@@ -46,9 +47,9 @@ TEST(HardCaseHurricane, WindStaysBoundedAndFlakesLeaveDownwind) {
     ground.size_x = ground.size_z = 16.0f;
     ground.cell = 0.125f;
     ground.spills = false;
-    const Entity ground_e = sim.add_surface(ground);
+    const SurfaceId ground_e = sim.add_surface(ground);
     const Aabb garage{{-1.0f, 0.0f, -1.5f}, {2.0f, 2.5f, 1.5f}};
-    const Entity box = sim.add_box(garage);
+    const ColliderId box = sim.add_box(garage);
     SurfaceDef roof;
     roof.x0 = garage.min.x;
     roof.z0 = garage.min.z;
@@ -73,8 +74,8 @@ TEST(HardCaseHurricane, WindStaysBoundedAndFlakesLeaveDownwind) {
 
     const float reach = w.max_deviation + w.gust_strength;
     const float max_speed = glm::length(w.base) + reach + 10.0f; // + fall speed and margin
-    const FlakePool& f = sim.flakes();
-    const auto& ledger = sim.world().resource<MassLedger>();
+    const FlakePool& f = flake_pool(sim);
+    const auto& ledger = world_of(sim).resource<MassLedger>();
     // Every slot's state before a tick: where a flake was when it vanished.
     std::vector<glm::vec3> last_p(f.capacity()), last_v(f.capacity());
     std::vector<std::uint32_t> last_units(f.capacity());
@@ -92,7 +93,7 @@ TEST(HardCaseHurricane, WindStaysBoundedAndFlakesLeaveDownwind) {
         }
         sim.tick();
         ASSERT_TRUE(hard::healthy(sim));
-        const Wind& now = sim.world().resource<Wind>();
+        const Wind& now = world_of(sim).resource<Wind>();
         const float dev = glm::length(now.current - now.base);
         ASSERT_LE(dev, reach * (1.0f + 1e-6f)) << "tick " << t;
         max_gust_seen = std::max(max_gust_seen, dev);
@@ -160,7 +161,7 @@ TEST(HardCaseHurricane, NoFlakeIsBornBelowTheGround) {
     o.seed = 31;
     o.ground_cells = 32;
     auto sim = make_yard(o); // ground bare top at y = 0 over the whole yard
-    const FlakePool& f = sim->flakes();
+    const FlakePool& f = flake_pool(*sim);
     std::vector<std::uint32_t> before(f.capacity());
     std::uint64_t spawned = 0, born_below = 0;
     for (int t = 0; t < 120; ++t) {

@@ -33,7 +33,7 @@ TEST(HardCasePileOnOneCell, HundredThousandFlakesOnOneCellSpreadExactly) {
     d.size_x = d.size_z = 1.6f; // 16 × 16 cells
     d.cell = 0.1f;
     d.spills = false;
-    const Entity e = sim.add_surface(d);
+    const SurfaceId e = sim.add_surface(d);
     // All just above the centre of cell (8, 8), falling at 1 m/s: every one
     // crosses the snow top in the first tick.
     for (std::uint32_t n = 0; n < flakes; ++n) {

@@ -6,6 +6,7 @@
 // exact mass, the wind within its bounds, and memory flat (no storage grows
 // and, on Linux, resident memory grows < 1 MiB from 10% to 100% of the run).
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "tests/scenes/sample_scenes.hpp"
 
@@ -35,7 +36,7 @@ std::uint64_t resident_kib() {
 
 /// Allocated sizes of every per-slot and per-cell buffer: equal means no growth.
 std::vector<std::size_t> storage_sizes(const Simulation& sim) {
-    const FlakePool& f = sim.flakes();
+    const FlakePool& f = flake_pool(sim);
     std::vector<std::size_t> sizes = {f.capacity(),
                                       f.px.capacity(),
                                       f.vy.capacity(),
@@ -43,8 +44,8 @@ std::vector<std::size_t> storage_sizes(const Simulation& sim) {
                                       f.size.capacity(),
                                       f.mass_units.capacity(),
                                       f.free_stack.capacity(),
-                                      sim.world().entity_count()};
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+                                      world_of(sim).entity_count()};
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         sizes.push_back(s.snow.size());
         sizes.push_back(s.snow.capacity());
         sizes.push_back(s.base_level.capacity());
@@ -62,13 +63,13 @@ TEST(HardCaseSoak, SmallYardStaysBoundedExactAndFlat) {
     o.emitter_rate = 150.0f;
     auto sim = make_yard(o);
     const SimConfig& cfg = sim->config();
-    const Wind base_wind = sim->world().resource<Wind>();
+    const Wind base_wind = world_of(*sim).resource<Wind>();
     const float max_speed = 50.0f; // wind 2 m/s ± 1, fall speeds up to 1.5 m/s, spills from rest
     // Warm-up: every buffer reaches its steady size in the first ticks.
     sim->run(100);
     const std::vector<std::size_t> sizes = storage_sizes(*sim);
     std::uint64_t rss_at_10 = 0, rss_at_100 = 0;
-    const FlakePool& f = sim->flakes();
+    const FlakePool& f = flake_pool(*sim);
     for (std::uint64_t t = 100; t < ticks; ++t) {
         sim->tick();
         if ((t + 1) % check_every != 0 && t + 1 != ticks) {
@@ -84,7 +85,7 @@ TEST(HardCaseSoak, SmallYardStaysBoundedExactAndFlat) {
             ASSERT_LE(glm::length(glm::vec3{f.vx[i], f.vy[i], f.vz[i]}), max_speed)
                 << "slot " << i << " tick " << t + 1;
         }
-        const Wind& w = sim->world().resource<Wind>();
+        const Wind& w = world_of(*sim).resource<Wind>();
         ASSERT_LE(glm::length(w.current - base_wind.base), base_wind.max_deviation * 1.0001f);
         ASSERT_EQ(storage_sizes(*sim), sizes) << "storage grew by tick " << t + 1;
         if (rss_at_10 == 0 && t + 1 >= ticks / 10) {

@@ -3,6 +3,7 @@
 // few steps); every integrator must instead stay finite and approach
 // v_t = wind + g/c monotonically (docs/design.md "Numerical stability").
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "systems/flakes/integrator.hpp"
 
@@ -60,7 +61,7 @@ TEST(HardCaseStiffDrag, EveryIntegratorStaysFiniteMonotoneAndConverges) {
             // Terminal velocity per axis, in double: wind + g/c.
             const double vt[3] = {wind_v.x, wind_v.y + cfg.gravity.y / static_cast<double>(c),
                                   wind_v.z};
-            const FlakePool& f = sim.flakes();
+            const FlakePool& f = flake_pool(sim);
             std::vector<glm::dvec3> gap(starts.size());
             auto read_gap = [&](std::size_t s) {
                 return glm::dvec3{f.vx[s] - vt[0], f.vy[s] - vt[1], f.vz[s] - vt[2]};
@@ -119,7 +120,7 @@ TEST(HardCaseStiffDrag, MixedStiffnessInOnePoolAroundEveryLimit) {
             hard::place_flake(sim, {0.0f, 100.0f, 0.0f}, {0.0f, 5.0f, 0.0f}, a / dt, 3);
         }
         std::vector<double> prev(std::size(as));
-        const FlakePool& f = sim.flakes();
+        const FlakePool& f = flake_pool(sim);
         for (std::size_t s = 0; s < std::size(as); ++s) {
             prev[s] = f.vy[s] - cfg.gravity.y * dt / as[s]; // gap to v_t = g/c
         }

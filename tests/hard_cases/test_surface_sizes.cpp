@@ -3,6 +3,7 @@
 // surface (4.2 M cells) must only work where snow changed: after a local
 // landing the dirty rectangle stays small and snow stays near the landing.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "systems/core/units.hpp"
 
@@ -23,17 +24,17 @@ TEST(HardCaseSurfaceSize, OneCellSurfaceLandsKeepsAndSpillsExactly) {
     g.size_x = g.size_z = 4.0f;
     g.cell = 0.1f;
     g.spills = false;
-    const Entity ground = sim.add_surface(g);
+    const SurfaceId ground = sim.add_surface(g);
     // A 10 cm pillar whose top is one cell: every cell is an edge cell.
     const Aabb pillar{{-0.05f, 0.0f, -0.05f}, {0.05f, 1.0f, 0.05f}};
-    const Entity post = sim.add_box(pillar);
+    const ColliderId post = sim.add_box(pillar);
     SurfaceDef top;
     top.x0 = top.z0 = -0.05f;
     top.size_x = top.size_z = 0.1f;
     top.cell = 0.1f;
     top.base_y = pillar.max.y;
     top.edge_limit = 0.001f; // 200 units of this cell
-    const Entity cap = sim.add_surface(top, post);
+    const SurfaceId cap = sim.add_surface(top, post);
     // A 1 × 1 ground-like surface with no spill: snow can only pile up in place.
     SurfaceDef lone;
     lone.x0 = lone.z0 = 1.0f;
@@ -41,7 +42,7 @@ TEST(HardCaseSurfaceSize, OneCellSurfaceLandsKeepsAndSpillsExactly) {
     lone.cell = 0.1f;
     lone.base_y = 0.5f;
     lone.spills = false;
-    const Entity lone_e = sim.add_surface(lone);
+    const SurfaceId lone_e = sim.add_surface(lone);
     // (References into the surface pool only after the last add_surface.)
     const SnowSurface& one = hard::surface(sim, cap);
     ASSERT_EQ(one.nx, 1u);
@@ -55,8 +56,8 @@ TEST(HardCaseSurfaceSize, OneCellSurfaceLandsKeepsAndSpillsExactly) {
         ASSERT_TRUE(hard::healthy(sim));
         ASSERT_LE(hard::cell_stats(one).max, 6000u);
     }
-    EXPECT_EQ(sim.flakes().alive, 0u);
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed(), 0u);
+    EXPECT_EQ(flake_pool(sim).alive, 0u);
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed(), 0u);
     // The pillar keeps at most its edge limit; the rest spilled onto the ground.
     EXPECT_LE(hard::cell_stats(one).sum, one.edge_limit_units);
     EXPECT_GT(hard::cell_stats(one).sum, 0u);
@@ -108,7 +109,7 @@ TEST(HardCaseSurfaceSize, HugeSurfaceWorksOnlyWhereSnowLanded) {
     d.size_x = d.size_z = cell * side;
     d.cell = cell;
     d.spills = false;
-    const Entity e = sim.add_surface(d);
+    const SurfaceId e = sim.add_surface(d);
     const SnowSurface& s = hard::surface(sim, e);
     ASSERT_EQ(s.nx, side);
     ASSERT_EQ(s.nz, side);

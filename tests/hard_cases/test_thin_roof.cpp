@@ -6,6 +6,7 @@
 // roof, and, for the stiff variant, by 86% (k·dt/m = 2, past explicit
 // Euler's limit, where the exact update takes over).
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include "ecs/rng.hpp"
 #include "systems/core/random_streams.hpp"
@@ -47,14 +48,14 @@ RoofRun fire_at_thin_roof(Integrator integ, float k_over_m, float floor, std::ui
     g.size_x = g.size_z = 16.0f;
     g.cell = 0.25f;
     g.spills = false;
-    const Entity ground = sim.add_surface(g);
+    const SurfaceId ground = sim.add_surface(g);
     SurfaceDef r;
     r.x0 = r.z0 = -1.0f;
     r.size_x = r.size_z = 2.0f;
     r.cell = 0.1f;
     r.base_y = roof_y1;
     r.spills = false; // every unit that lands stays where it can be counted
-    const Entity roof =
+    const SurfaceId roof =
         solid ? sim.add_surface(r, sim.add_box({{-1.0f, roof_y0, -1.0f}, {1.0f, roof_y1, 1.0f}}))
               : sim.add_surface(r);
     // Drag alone would stop a flake within v0/c (1.7 m at c = 120/s): start
@@ -78,8 +79,8 @@ RoofRun fire_at_thin_roof(Integrator integ, float k_over_m, float floor, std::ui
     }
     out.on_roof = hard::cell_stats(hard::surface(sim, roof)).sum;
     out.on_ground = hard::cell_stats(hard::surface(sim, ground)).sum;
-    out.removed = sim.world().resource<MassLedger>().removed();
-    const FlakePool& f = sim.flakes();
+    out.removed = world_of(sim).resource<MassLedger>().removed();
+    const FlakePool& f = flake_pool(sim);
     out.alive = f.alive;
     for (std::uint32_t i = 0; i < f.slot_end; ++i) {
         out.below += f.is_alive(i) && f.py[i] < roof_y1 ? f.mass_units[i] : 0;

@@ -4,6 +4,7 @@
 // and nothing may land (g/c = 0: the terminal velocity is exactly zero),
 // bit for bit, with every integrator.
 #include "hard_case_util.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/find_flake.hpp"
 
 #include <vector>
@@ -13,7 +14,7 @@ namespace {
 
 struct EmptyScene {
     std::unique_ptr<Simulation> sim;
-    Entity ground, roof;
+    SurfaceId ground, roof;
 };
 
 /// Ground and a roofed box; zero gravity, still wind (base 0, walk 0), no emitter.
@@ -31,7 +32,7 @@ EmptyScene empty_scene(Integrator integ) {
     g.cell = 0.1f;
     g.spills = false;
     s.ground = s.sim->add_surface(g);
-    const Entity box = s.sim->add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
+    const ColliderId box = s.sim->add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
     SurfaceDef r;
     r.x0 = r.z0 = -1.0f;
     r.size_x = r.size_z = 2.0f;
@@ -61,13 +62,13 @@ TEST(HardCaseNothing, NoFlakesNoWindNoGravityThousandTicks) {
         const MassReport m = s.sim->mass();
         EXPECT_EQ(m.spawned, 0u);
         EXPECT_EQ(m.settled, 0u);
-        EXPECT_EQ(s.sim->flakes().alive, 0u);
-        const Wind& w = s.sim->world().resource<Wind>();
+        EXPECT_EQ(flake_pool(*s.sim).alive, 0u);
+        const Wind& w = world_of(*s.sim).resource<Wind>();
         EXPECT_EQ(w.current, glm::vec3(0.0f)); // walk 0: the deviation never leaves zero
         EXPECT_NE(s.sim->state_hash(), start); // only the clock moved...
         EXPECT_EQ(s.sim->tick_count(), 1000u);
         // ... and the systems that need flakes never ran (docs/design.md "What is declared runs").
-        for (const auto& sys : s.sim->schedule().stats()) {
+        for (const auto& sys : schedule_of(*s.sim).stats()) {
             if (sys.name == "spawn" || sys.name == "flakes") {
                 EXPECT_EQ(sys.calls, 0u) << sys.name;
             }
@@ -90,7 +91,7 @@ TEST(HardCaseNothing, FlakesAtRestInWeightlessStillAirNeverMoveOrLand) {
             s.sim->tick();
             ASSERT_TRUE(hard::healthy(*s.sim));
         }
-        const FlakePool& f = s.sim->flakes();
+        const FlakePool& f = flake_pool(*s.sim);
         EXPECT_EQ(f.alive, at.size());
         EXPECT_EQ(s.sim->mass().settled, 0u);
         for (std::uint32_t id = 0; id < at.size(); ++id) { // placed first: ids 0, 1, ...
@@ -100,7 +101,7 @@ TEST(HardCaseNothing, FlakesAtRestInWeightlessStillAirNeverMoveOrLand) {
             EXPECT_EQ(glm::vec3(f.px[i], f.py[i], f.pz[i]), at[id]) << "flake " << id;
             EXPECT_EQ(glm::vec3(f.vx[i], f.vy[i], f.vz[i]), glm::vec3(0.0f)) << "flake " << id;
         }
-        EXPECT_EQ(s.sim->world().resource<MassLedger>().removed(), 0u);
+        EXPECT_EQ(world_of(*s.sim).resource<MassLedger>().removed(), 0u);
     }
 }
 

@@ -1,6 +1,6 @@
 #include "render_fixture.hpp"
 
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "systems/flakes/flake_pool.hpp"
 #include "systems/sky/occlusion.hpp"
 
@@ -196,7 +196,7 @@ Image render_image(const World& world, const SceneVisuals& visuals, const ViewCa
                    const RenderSettings& settings) {
     auto context = headless_context();
     Renderer renderer(*context, settings);
-    renderer.render(world, visuals, camera);
+    render_world(renderer, world, visuals, camera);
     return renderer.read_pixels();
 }
 

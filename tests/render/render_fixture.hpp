@@ -5,14 +5,10 @@
 #pragma once
 
 #include "ecs/world.hpp"
-#include "render/camera.hpp"
 #include "render/context/osmesa_context.hpp"
-#include "render/image.hpp"
-#include "render/render_settings.hpp"
-#include "render/scene_visuals.hpp"
-#include "systems/api/fog.hpp"
 #include "systems/geometry/geometry.hpp"
 #include "systems/snowpack/snow_surface.hpp"
+#include <snow/render.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The view camera: built from a CameraDef, it looks at the target.
-#include "render/camera.hpp"
+#include <snow/render.hpp>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -13,9 +13,7 @@ namespace {
 Image render_fixture(const std::optional<Fog>& fog) {
     FixtureScene scene;
     build_fixture(scene);
-    if (fog) {
-        scene.world.set_resource<Fog>(*fog);
-    }
+    scene.visuals.fog = fog;
     return render_image(scene.world, scene.visuals, scene.camera);
 }
 

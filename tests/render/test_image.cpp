@@ -1,7 +1,7 @@
 // Images: PNG round trip, errors naming the path, screenshots right side up.
-#include "render/render_error.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "render_fixture.hpp"
+#include <snow/error.hpp>
 
 #include <gtest/gtest.h>
 

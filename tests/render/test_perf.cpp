@@ -2,7 +2,7 @@
 // asserts are not allowed). Run it with
 //   snow_tests --gtest_also_run_disabled_tests --gtest_filter='RenderPerf.*'
 // The numbers in docs/rendering.md come from here.
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "render_fixture.hpp"
 #include "systems/flakes/flake_pool.hpp"
 
@@ -18,9 +18,9 @@ namespace {
 void report(Renderer& renderer, FixtureScene& scene, const char* label) {
     constexpr int frames = 15;
     std::vector<double> frame_ms, flake_ms;
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     for (int i = 0; i < frames; ++i) {
-        renderer.render(scene.world, scene.visuals, scene.camera);
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
         const FrameTimings& t = renderer.timings();
         frame_ms.push_back(t.frame_ms);
         for (const PassTiming& p : t.passes) {

@@ -1,8 +1,8 @@
 // The renderer on a World built and stepped by the real Simulation: it reads
 // the state (never writes it) and uses the occlusion system's map.
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "render_fixture.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     sim.add_surface(ground);
     const Aabb roof_box{{0.5f, 2.0f, -1.5f}, {3.5f, 2.15f, 1.5f}};
     const Aabb crate_box{{1.4f, 0.0f, -0.6f}, {2.6f, 0.7f, 0.6f}};
-    const Entity roof = sim.add_box(roof_box);
+    const ColliderId roof = sim.add_box(roof_box);
     SurfaceDef top;
     top.x0 = roof_box.min.x;
     top.z0 = roof_box.min.z;
@@ -39,8 +39,8 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     visuals.meshes = {box_mesh(roof_box, {0.4f, 0.4f, 0.45f}),
                       box_mesh(crate_box, {0.45f, 0.30f, 0.15f})};
     sim.run(240);
-    ASSERT_GT(sim.flakes().alive, 0u);
-    ASSERT_TRUE(sim.world().has_resource<OcclusionMap>());
+    ASSERT_GT(flake_pool(sim).alive, 0u);
+    ASSERT_TRUE(world_of(sim).has_resource<OcclusionMap>());
 
     CameraDef def;
     def.position = {1.5f, 3.4f, 8.5f};
@@ -49,7 +49,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     auto context = headless_context();
     Renderer renderer(*context);
     const std::uint64_t before = sim.state_hash();
-    renderer.render(sim.world(), visuals, camera);
+    renderer.render(sim, visuals, camera);
     EXPECT_EQ(sim.state_hash(), before) << "rendering changed the simulation";
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 2u);
     EXPECT_GT(renderer.timings().flakes_drawn, 0u);
@@ -63,7 +63,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     EXPECT_GT(brightness({2.0f, 2.15f, 0.0f}), brightness({2.0f, 0.7f, 0.3f}) + 60.0f);
 
     sim.run(60); // more snow lands: only changed surfaces are re-uploaded
-    renderer.render(sim.world(), visuals, camera);
+    renderer.render(sim, visuals, camera);
     EXPECT_GE(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_LE(renderer.timings().surfaces_uploaded, 2u);
 }

@@ -28,7 +28,7 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     sim->add_surface(ground);
 
     const Aabb garage{{-1.0f, 0.0f, -1.5f}, {2.0f, 2.5f, 1.5f}};
-    const Entity box = sim->add_box(garage);
+    const ColliderId box = sim->add_box(garage);
     SurfaceDef roof;
     roof.x0 = garage.min.x;
     roof.z0 = garage.min.z;
@@ -98,7 +98,7 @@ std::unique_ptr<Simulation> make_stormy_yard(unsigned threads, TaskSystem* task_
     sim->set_wind(wind);
     const glm::vec3 a{-6.0f, 2.0f, 1.0f}, b{-2.0f, 2.0f, 1.0f}, c{-2.0f, 2.5f, 5.0f},
         d{-6.0f, 2.5f, 5.0f};
-    const Entity shelter = sim->add_mesh_collider({a, b, c, a, c, d});
+    const ColliderId shelter = sim->add_mesh_collider({a, b, c, a, c, d});
     SurfaceDef roof;
     roof.x0 = a.x;
     roof.z0 = a.z;

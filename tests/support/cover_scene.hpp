@@ -4,7 +4,7 @@
 /// box with drops at its sides; a declared roof rectangle the cover yields to).
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <memory>
 #include <vector>
@@ -13,8 +13,8 @@ namespace snow::test {
 
 struct CoverScene {
     std::unique_ptr<Simulation> sim;
-    Entity cover;
-    Entity roof;              ///< a declared surface on a box
+    CoverId cover;
+    SurfaceId roof;           ///< a declared surface on a box
     float ground_half = 2.0f; ///< the ground mesh spans [-ground_half, ground_half]²
 };
 
@@ -31,7 +31,7 @@ inline CoverScene snowed_cover_scene(int ticks) {
         {{-g, 0.0f, -g}, {g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, -g}, {g, 0.0f, g}, {-g, 0.0f, g}});
     sim.add_sphere({-0.8f, 0.6f, -0.8f}, 0.5f);
     sim.add_box({{0.4f, 0.0f, 0.4f}, {1.2f, 0.6f, 1.2f}});
-    const Entity shed = sim.add_box({{-1.4f, 0.0f, 0.6f}, {-0.6f, 0.8f, 1.4f}});
+    const ColliderId shed = sim.add_box({{-1.4f, 0.0f, 0.6f}, {-0.6f, 0.8f, 1.4f}});
     SurfaceDef roof;
     roof.x0 = -1.4f;
     roof.z0 = 0.6f;

@@ -5,7 +5,7 @@
 /// never run a chunk on the second one.
 #pragma once
 
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/jobs.hpp"
 
 namespace snow::test {

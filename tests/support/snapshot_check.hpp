@@ -5,7 +5,7 @@
 /// body at the end).
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,14 +27,14 @@ struct RunEnd {
 };
 
 inline RunEnd run_end(const Simulation& sim) {
-    RunEnd r{sim.flakes(), {}, {}, {}, {}, sim.world().resource<MassLedger>(), sim.counters()};
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+    RunEnd r{flake_pool(sim), {}, {}, {}, {}, world_of(sim).resource<MassLedger>(), sim.counters()};
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         r.snow.push_back(s.snow);
         r.base.push_back(s.base_level);
     });
-    sim.world().each<SnowCover>(
+    world_of(sim).each<SnowCover>(
         [&](Entity, const SnowCover& c) { r.edge_cells.push_back(c.edge_cells); });
-    sim.world().each<Body>([&](Entity, const Body& b) { r.bodies.push_back(b); });
+    world_of(sim).each<Body>([&](Entity, const Body& b) { r.bodies.push_back(b); });
     return r;
 }
 
@@ -97,11 +97,11 @@ inline std::vector<std::uint64_t> hashes_per_tick(Simulation& sim, std::uint64_t
 inline std::unique_ptr<Snapshot> expect_restore_replays(Simulation& sim, std::uint64_t warm,
                                                         std::uint64_t ahead) {
     sim.run(warm);
-    auto snap = sim.save();
+    auto snap = save_snapshot(sim);
     const std::uint64_t saved = sim.state_hash();
     const std::vector<std::uint64_t> reference = hashes_per_tick(sim, ahead);
     const RunEnd reference_end = run_end(sim);
-    sim.restore(*snap);
+    restore_snapshot(sim, *snap);
     EXPECT_EQ(sim.state_hash(), saved) << "restore did not bring back the saved state";
     for (std::uint64_t t = 0; t < ahead; ++t) {
         sim.tick();

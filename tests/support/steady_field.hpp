@@ -4,7 +4,7 @@
 /// obstacles alone and runs can be compared tick for tick.
 #pragma once
 
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <cstdint>
 

@@ -7,6 +7,7 @@
 #include "game/export/snow_export.hpp"
 #include "game/export/snow_mesh.hpp"
 #include "game/export/surface_list.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/cover_scene.hpp"
 #include "tests/support/run_app.hpp"
 
@@ -225,8 +226,8 @@ TEST(SnowMesh, ClosedEdgesSplitTheTopAtADrop) {
 
 TEST(SnowMesh, CoverOverSphereBoxAndGroundLooksClosed) {
     const test::CoverScene scene = test::snowed_cover_scene(600);
-    const World& w = scene.sim->world();
-    const SnowSurface& cover = w.get<SnowSurface>(scene.cover);
+    const World& w = world_of(*scene.sim);
+    const SnowSurface& cover = w.get<SnowSurface>(entity_of(scene.cover));
     const SnowMesh m = build_snow_mesh(cover);
     ASSERT_FALSE(m.empty());
     expect_closed_looking(cover, m);
@@ -236,7 +237,7 @@ TEST(SnowMesh, CoverOverSphereBoxAndGroundLooksClosed) {
         EXPECT_LE(std::abs(p.z), scene.ground_half + 1e-4f);
     }
     // The shed's roof is a declared surface: the cover leaves its columns to it.
-    const SnowSurface& roof = w.get<SnowSurface>(scene.roof);
+    const SnowSurface& roof = w.get<SnowSurface>(entity_of(scene.roof));
     for (const long c : top_triangle_cells(cover, m)) {
         ASSERT_GE(c, 0);
         const float x = cover.x0 + (static_cast<float>(c % cover.nx) + 0.5f) * cover.cell;
@@ -309,7 +310,7 @@ TEST_F(ExportFiles, GlbReadsBackAsGltf2) {
         names.insert(n["name"]);
     }
     EXPECT_EQ(names, expected);
-    EXPECT_TRUE(names.count("cover_" + std::to_string(scene.cover.index())));
+    EXPECT_TRUE(names.count("cover_" + std::to_string(entity_of(scene.cover).index())));
     const auto& pbr = j["materials"][0]["pbrMetallicRoughness"];
     EXPECT_EQ(pbr["metallicFactor"], 0.0);
     EXPECT_GE(pbr["roughnessFactor"].get<double>(), 0.8);

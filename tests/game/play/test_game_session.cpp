@@ -1,6 +1,7 @@
 // snow_game's session (game/play/game_session.hpp) played through its input, no
 // window and no GL: each key does to the simulation, the camera, the player
 // and the clock what the game's help says it does.
+#include "systems/api/simulation_internals.hpp"
 #include "tests/game/play/game_play.hpp"
 
 #include <gtest/gtest.h>
@@ -18,14 +19,14 @@ using test::quick_game;
 
 std::vector<float> emitter_rates(const Simulation& sim) {
     std::vector<float> rates;
-    sim.world().each<Emitter>([&](Entity, const Emitter& e) { rates.push_back(e.rate); });
+    world_of(sim).each<Emitter>([&](Entity, const Emitter& e) { rates.push_back(e.rate); });
     return rates;
 }
 
 glm::vec3 player_position(const GamePlay& g) {
     const Walker* w = g.session->walker();
     EXPECT_NE(w, nullptr);
-    return w ? g.sim().body(w->body()).position : glm::vec3(NAN);
+    return w ? body_of(g.sim(), w->body()).position : glm::vec3(NAN);
 }
 
 TEST(GameSession, SnowfallKeysScaleEveryEmittersRate) {
@@ -154,18 +155,18 @@ TEST(GameSession, ResetAfterASnowballGoesOnFromTheStart) {
     GamePlay g(quick_game(), "0:B,3:P,4:R,5:P");
     const std::uint64_t start_tick = g.sim().tick_count();
     const MassReport start_mass = g.sim().mass();
-    const std::size_t start_bodies = g.sim().world().count<Body>();
+    const std::size_t start_bodies = world_of(g.sim()).count<Body>();
     const glm::vec3 start = player_position(g);
     g.play();
     EXPECT_EQ(g.session->message().rfind("snowball made ahead", 0), 0u) << g.session->message();
-    EXPECT_EQ(g.sim().world().count<Body>(), start_bodies + 1);
+    EXPECT_EQ(world_of(g.sim()).count<Body>(), start_bodies + 1);
     g.play(3); // on to P: the snowball rolls with the world for three ticks
     EXPECT_EQ(g.sim().tick_count(), start_tick + 3);
     g.play(); // R, while paused: no tick after it
     EXPECT_FALSE(g.session->quit());
     EXPECT_EQ(g.session->message(), "reset to tick " + std::to_string(start_tick));
     EXPECT_EQ(g.sim().tick_count(), start_tick);
-    EXPECT_EQ(g.sim().world().count<Body>(), start_bodies) << "the snowball is gone";
+    EXPECT_EQ(world_of(g.sim()).count<Body>(), start_bodies) << "the snowball is gone";
     const MassReport mass = g.sim().mass();
     EXPECT_EQ(mass.spawned, start_mass.spawned);
     EXPECT_EQ(mass.airborne, start_mass.airborne);
@@ -198,23 +199,23 @@ TEST(GameSession, ResetAfterTheWalkCameraCameLaterKeepsAPlayer) {
 
 TEST(GameSession, FogKeyTogglesTheScenesFog) {
     GamePlay g(quick_game());
-    ASSERT_TRUE(g.sim().world().has_resource<Fog>());
+    ASSERT_TRUE(g.session->visuals().fog.has_value());
     g.press(GLFW_KEY_F);
-    EXPECT_FALSE(g.sim().world().has_resource<Fog>());
+    EXPECT_FALSE(g.session->visuals().fog.has_value());
     EXPECT_EQ(g.session->message(), "fog off");
     g.press(GLFW_KEY_F);
-    EXPECT_TRUE(g.sim().world().has_resource<Fog>());
+    EXPECT_TRUE(g.session->visuals().fog.has_value());
 }
 
 TEST(GameSession, ArrowKeysTurnAndScaleTheWind) {
     GamePlay g(quick_game());
-    const glm::vec3 base = g.sim().world().resource<Wind>().base;
+    const glm::vec3 base = world_of(g.sim()).resource<Wind>().base;
     g.press(GLFW_KEY_UP);
-    EXPECT_NEAR(glm::length(g.sim().world().resource<Wind>().base), 1.25f * glm::length(base),
+    EXPECT_NEAR(glm::length(world_of(g.sim()).resource<Wind>().base), 1.25f * glm::length(base),
                 1e-5f);
     g.press(GLFW_KEY_DOWN);
     g.press(GLFW_KEY_LEFT);
-    const glm::vec3 turned = g.sim().world().resource<Wind>().base;
+    const glm::vec3 turned = world_of(g.sim()).resource<Wind>().base;
     EXPECT_NEAR(glm::length(turned), glm::length(base), 1e-5f);
     // 15° counter-clockwise seen from above (+y): the angle between them, and its sense.
     EXPECT_NEAR(std::acos(glm::dot(turned, base) / glm::dot(base, base)), 0.2618f, 1e-3f);

@@ -3,7 +3,8 @@
 // the user gave no value, loadable with every project scene, and bad override
 // values rejected naming the field.
 #include "game/play/quality.hpp"
-#include "game/scene/scene_loader.hpp"
+#include "systems/api/simulation_internals.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -75,17 +76,18 @@ TEST(Quality, EveryPresetLoadsEveryProjectSceneAndApplies) {
             EXPECT_EQ(r.sim->config().integrator, q.integrator);
             // Same surfaces, cells scaled.
             std::vector<float> cells, plain_cells;
-            r.sim->world().each<SnowSurface>(
+            world_of(*r.sim).each<SnowSurface>(
                 [&](Entity, const SnowSurface& s) { cells.push_back(s.cell); });
-            plain.sim->world().each<SnowSurface>(
-                [&](Entity, const SnowSurface& s) { plain_cells.push_back(s.cell); });
+            world_of(*plain.sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
+                plain_cells.push_back(s.cell);
+            });
             ASSERT_EQ(cells.size(), plain_cells.size());
             for (std::size_t i = 0; i < cells.size(); ++i) {
                 EXPECT_FLOAT_EQ(cells[i], plain_cells[i] * q.cell_scale) << scene << " " << q.name;
             }
             // The sky map follows the preset where the scene has one.
-            const auto* cam = r.sim->world().try_resource<OcclusionCamera>();
-            EXPECT_EQ(cam != nullptr, plain.sim->world().has_resource<OcclusionCamera>());
+            const auto* cam = world_of(*r.sim).try_resource<OcclusionCamera>();
+            EXPECT_EQ(cam != nullptr, world_of(*plain.sim).has_resource<OcclusionCamera>());
             if (cam != nullptr) {
                 EXPECT_EQ(cam->resolution, q.occlusion_resolution);
             }

@@ -7,6 +7,7 @@
 #include "game/play/snow_readout.hpp"
 #include "game/play/time_scale.hpp"
 #include "game/play/walker.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/even_snow.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ constexpr std::uint32_t depth_units = 4000; // 2 cm of snow on 10 cm cells
 /// A 10 m ground surface with 2 cm of snow and a 1 m high box (a wall) at x > 2.
 struct SnowyYard {
     Simulation sim;
-    Entity ground;
+    SurfaceId ground;
     SnowyYard() : sim(config()) {
         SurfaceDef d;
         d.x0 = d.z0 = -5.0f;
@@ -54,7 +55,7 @@ struct SnowyYard {
         return c;
     }
     float depth(float x, float z) const {
-        const auto c = snow_column(sim.world(), x, z);
+        const auto c = snow_column(world_of(sim), x, z);
         EXPECT_TRUE(c.has_value()) << x << ", " << z;
         return c ? c->depth : -1.0f;
     }
@@ -72,11 +73,11 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
     Walker w(y.sim, {-2.0f, 5.0f, 0.0f});
     y.walk(w, {0.0f, 0.0f}, 1);
     // It stands on the bare ground, its flat soles on it.
-    const float lowest = y.sim.body(w.body()).position.y - 0.25f - 0.6f;
+    const float lowest = body_of(y.sim, w.body()).position.y - 0.25f - 0.6f;
     EXPECT_NEAR(lowest, 0.0f, 1.0e-6f);
     const std::uint64_t settled = y.sim.mass().settled;
     y.walk(w, {1.0f, 0.0f}, 150); // 1.4 m/s for 2.5 s: 3.5 m along +x
-    const glm::vec3 p = y.sim.body(w.body()).position;
+    const glm::vec3 p = body_of(y.sim, w.body()).position;
     EXPECT_NEAR(p.x, -2.0f + 3.5f, 0.02f);
     EXPECT_NEAR(p.z, 0.0f, 1.0e-4f);
     EXPECT_EQ(y.sim.mass().settled, settled) << "snow pushed aside, none lost";
@@ -99,25 +100,25 @@ TEST(Walker, StopsAtAWallAndSlidesAlongIt) {
     SnowyYard y;
     Walker w(y.sim, {1.0f, 0.0f, 0.0f});
     y.walk(w, {1.0f, 0.0f}, 120); // towards the 1 m wall at x = 2
-    const float x = y.sim.body(w.body()).position.x;
+    const float x = body_of(y.sim, w.body()).position.x;
     EXPECT_LT(x, 2.0f - 0.25f) << "its front stops at the wall";
     EXPECT_GT(x, 2.0f - 0.25f - 0.03f);
     const glm::vec2 diagonal = glm::normalize(glm::vec2(1.0f, 1.0f));
     y.walk(w, diagonal, 60); // into the wall at 45°: only the z part moves
-    const glm::vec3 p = y.sim.body(w.body()).position;
+    const glm::vec3 p = body_of(y.sim, w.body()).position;
     EXPECT_EQ(p.x, x);
     EXPECT_NEAR(p.z, 1.4f * diagonal.y, 0.03f);
 }
 
 /// A snowy roof on a box from `low` to `high` over x in [-1, 1], z in [-1, 1].
-Entity add_roof(SnowyYard& y, float low, float high) {
+SurfaceId add_roof(SnowyYard& y, float low, float high) {
     SurfaceDef top;
     top.x0 = top.z0 = -1.0f;
     top.size_x = top.size_z = 2.0f;
     top.cell = cell;
     top.base_y = high;
     top.spills = false;
-    const Entity roof =
+    const SurfaceId roof =
         y.sim.add_surface(top, y.sim.add_box({{-1.0f, low, -1.0f}, {1.0f, high, 1.0f}}));
     test::snow_every_cell(y.sim, roof, depth_units);
     return roof;
@@ -125,17 +126,17 @@ Entity add_roof(SnowyYard& y, float low, float high) {
 
 TEST(Walker, WalksUnderARoofAndLeavesItsSnowAlone) {
     SnowyYard y;
-    const Entity roof = add_roof(y, 2.0f, 2.15f); // a porch: higher than the 1.7 m player
-    const std::vector<std::uint32_t> roof_snow = y.sim.surface(roof).snow;
+    const SurfaceId roof = add_roof(y, 2.0f, 2.15f); // a porch: higher than the 1.7 m player
+    const std::vector<std::uint32_t> roof_snow = snow_surface(y.sim, roof).snow;
     Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
     y.walk(w, {1.0f, 0.0f}, 60); // to x = -0.6, under the roof
     EXPECT_NEAR(w.eye(y.sim).y, w.depth_under(y.sim) + 1.6f, 1.0e-4f) << "on the ground";
     y.walk(w, {1.0f, 0.0f}, 90); // out the other side, to x = 1.5
-    const glm::vec3 p = y.sim.body(w.body()).position;
+    const glm::vec3 p = body_of(y.sim, w.body()).position;
     EXPECT_NEAR(p.x, 1.5f, 0.02f);
     EXPECT_NEAR(p.y, 0.85f, 1.0e-4f) << "its soles on the ground all the way";
-    EXPECT_EQ(y.sim.surface(roof).snow, roof_snow);
-    const auto under = snow_column(y.sim.world(), 0.0f, 0.0f, 0.5f); // the ground, not the roof
+    EXPECT_EQ(snow_surface(y.sim, roof).snow, roof_snow);
+    const auto under = snow_column(world_of(y.sim), 0.0f, 0.0f, 0.5f); // the ground, not the roof
     ASSERT_TRUE(under);
     EXPECT_EQ(under->base, 0.0f);
     EXPECT_LT(under->depth, 0.25f * y.depth(0.0f, 1.5f)) << "its trench under the roof";
@@ -146,17 +147,17 @@ TEST(Walker, ALowBeamStopsIt) {
     add_roof(y, 1.0f, 1.2f); // lower than its head
     Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
     y.walk(w, {1.0f, 0.0f}, 90);
-    EXPECT_LT(y.sim.body(w.body()).position.x, -1.0f - 0.25f + 0.03f);
+    EXPECT_LT(body_of(y.sim, w.body()).position.x, -1.0f - 0.25f + 0.03f);
 }
 
 TEST(Walker, StaysOnTheSnowAndInsideTheGround) {
     SnowyYard y;
     Walker w(y.sim, {40.0f, 0.0f, -40.0f}); // placed 1 m inside the ground's corner
-    const glm::vec3 start = y.sim.body(w.body()).position;
+    const glm::vec3 start = body_of(y.sim, w.body()).position;
     EXPECT_FLOAT_EQ(start.x, 4.0f);
     EXPECT_FLOAT_EQ(start.z, -4.0f);
     y.walk(w, {0.0f, -1.0f}, 120); // off the edge of the snow: it stops there
-    EXPECT_GT(y.sim.body(w.body()).position.z, -5.0f);
+    EXPECT_GT(body_of(y.sim, w.body()).position.z, -5.0f);
 }
 
 TEST(Walker, MakesPushesAndRollsASnowball) {
@@ -165,41 +166,41 @@ TEST(Walker, MakesPushesAndRollsASnowball) {
     y.walk(w, {0.0f, 0.0f}, 1);
     const glm::vec2 east{1.0f, 0.0f};
     EXPECT_EQ(w.push_snowball(y.sim, east).rfind("snowball made", 0), 0u);
-    EXPECT_EQ(y.sim.world().count<Body>(), 2u);
+    EXPECT_EQ(world_of(y.sim).count<Body>(), 2u);
     y.walk(w, {0.0f, 0.0f}, 1);
-    const Entity ball = [&] {
-        Entity found;
-        y.sim.world().each<Body>([&](Entity e, const Body& b) {
+    const BodyId ball = [&] {
+        BodyId found;
+        world_of(y.sim).each<Body>([&](Entity e, const Body& b) {
             if (b.snowball) {
-                found = e;
+                found = id_of<BodyId>(e);
             }
         });
         return found;
     }();
     ASSERT_FALSE(ball.is_null());
-    const float x0 = y.sim.body(ball).position.x;
+    const float x0 = body_of(y.sim, ball).position.x;
     EXPECT_NEAR(x0, -2.0f + 0.25f + 0.2f + 0.3f, 1.0e-4f);
     EXPECT_EQ(w.push_snowball(y.sim, east).rfind("snowball pushed", 0), 0u);
     y.walk(w, {0.0f, 0.0f}, 60); // it rolls on, slowing, and picks the snow up
-    const Body& b = y.sim.body(ball);
+    const Body& b = body_of(y.sim, ball);
     EXPECT_GT(b.position.x, x0 + 1.0f);
     EXPECT_LT(glm::length(b.velocity), 2.0f);
     EXPECT_GT(b.carried, 0u);
     EXPECT_GT(b.radius, 0.2f);
     EXPECT_TRUE(y.sim.mass().balanced());
     y.walk(w, {0.0f, 0.0f}, 600); // friction stops it, or the wall at x = 2 does
-    EXPECT_EQ(y.sim.body(ball).velocity, glm::vec3(0.0f));
-    EXPECT_LT(y.sim.body(ball).position.x, 2.0f);
+    EXPECT_EQ(body_of(y.sim, ball).velocity, glm::vec3(0.0f));
+    EXPECT_LT(body_of(y.sim, ball).position.x, 2.0f);
     EXPECT_NE(w.push_snowball(y.sim, east).find("away: walk up to it"), std::string::npos);
 }
 
 TEST(Walker, ResetKeepsTheBodyAndStartsTheTrailAgain) {
     SnowyYard y;
     Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
-    const auto start = y.sim.save();
+    const auto start = save_snapshot(y.sim);
     y.walk(w, {1.0f, 0.0f}, 60);
     EXPECT_GT(w.trail(y.sim).walked, 1.0f);
-    y.sim.restore(*start);
+    restore_snapshot(y.sim, *start);
     ASSERT_TRUE(w.alive(y.sim));
     w.restart(y.sim);
     EXPECT_EQ(w.trail(y.sim).walked, 0.0f);
@@ -207,15 +208,15 @@ TEST(Walker, ResetKeepsTheBodyAndStartsTheTrailAgain) {
 
 TEST(SnowReadout, ColumnIsTheHighestBareTopAndItsSnow) {
     SnowyYard y;
-    const auto ground = snow_column(y.sim.world(), 0.0f, 0.0f);
+    const auto ground = snow_column(world_of(y.sim), 0.0f, 0.0f);
     ASSERT_TRUE(ground);
     EXPECT_FLOAT_EQ(ground->base, 0.0f);
     EXPECT_NEAR(ground->depth, 0.02f, 1.0e-6f);
-    const auto wall = snow_column(y.sim.world(), 2.5f, 0.0f);
+    const auto wall = snow_column(world_of(y.sim), 2.5f, 0.0f);
     ASSERT_TRUE(wall);
     EXPECT_NEAR(wall->base, 1.0f, 1.0e-4f); // the wall's top, above the ground's cell
-    EXPECT_FALSE(snow_column(y.sim.world(), 7.0f, 0.0f));
-    const SnowSurface* g = ground_surface(y.sim.world());
+    EXPECT_FALSE(snow_column(world_of(y.sim), 7.0f, 0.0f));
+    const SnowSurface* g = ground_surface(world_of(y.sim));
     ASSERT_NE(g, nullptr);
     EXPECT_EQ(g->nx, 100u); // the ground, not the wall's top
     EXPECT_NEAR(mean_depth(*g), 0.02, 1.0e-9);

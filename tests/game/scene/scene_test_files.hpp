@@ -4,7 +4,7 @@
 /// chunks), a scratch folder, and checks on a failed load.
 #pragma once
 
-#include "game/scene/scene_loader.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,6 +3,7 @@
 // colliders, an occlusion camera, a snow cover, an emitter and a camera, and
 // its snow settles on the meshes' tops with the usual promises (exact mass,
 // thread- and save/restore-independent hashes). Without it nothing changes.
+#include "systems/api/simulation_internals.hpp"
 #include "tests/game/scene/scene_test_files.hpp"
 #include "tests/support/run_app.hpp"
 
@@ -40,16 +41,17 @@ SceneOverrides auto_overrides(unsigned threads = 1) {
     return o;
 }
 
-std::vector<Entity> covers(const Simulation& sim) {
-    std::vector<Entity> out;
-    sim.world().each<SnowCover>([&](Entity e, const SnowCover&) { out.push_back(e); });
+std::vector<CoverId> covers(const Simulation& sim) {
+    std::vector<CoverId> out;
+    world_of(sim).each<SnowCover>(
+        [&](Entity e, const SnowCover&) { out.push_back(id_of<CoverId>(e)); });
     return out;
 }
 
 /// True when some cover cell whose bare base is above `y` holds snow.
 bool snow_on_a_top_above(const Simulation& sim, float y) {
     bool found = false;
-    sim.world().each<SnowCover, SnowSurface>([&](Entity, const SnowCover&, const SnowSurface& s) {
+    world_of(sim).each<SnowCover, SnowSurface>([&](Entity, const SnowCover&, const SnowSurface& s) {
         for (std::size_t i = 0; i < s.cell_count(); ++i) {
             found = found || (!s.is_void(i) && s.snow[i] > 0 && s.height(s.base_level[i]) > y);
         }
@@ -94,7 +96,7 @@ TEST(AutoSnow, PlainFilesCatchSnowOnTheirMeshTops) {
         SCOPED_TRACE(f.name);
         const SceneLoadResult r = load_scene_file(test_data_path(f.name), auto_overrides());
         ASSERT_NE(r.sim, nullptr) << r.error;
-        const World& w = r.sim->world();
+        const World& w = world_of(*r.sim);
         EXPECT_EQ(w.count<MeshCollider>(), f.mesh_nodes);
         EXPECT_EQ(w.count<Emitter>(), 1u);
         ASSERT_NE(w.try_resource<OcclusionCamera>(), nullptr);
@@ -106,7 +108,7 @@ TEST(AutoSnow, PlainFilesCatchSnowOnTheirMeshTops) {
                 << "tick " << t << ": " << m.spawned << " != " << m.airborne << " + " << m.settled
                 << " + " << m.carried << " + " << m.removed;
         }
-        const SnowSurface& cover = r.sim->surface(covers(*r.sim)[0]);
+        const SnowSurface& cover = snow_surface(*r.sim, covers(*r.sim)[0]);
         EXPECT_GT(cover.settled_units(), 0u);
         EXPECT_TRUE(snow_on_a_top_above(*r.sim, f.raised_top));
         EXPECT_EQ(r.sim->nonfinite_count(), 0u);
@@ -117,7 +119,7 @@ TEST(AutoSnow, CoverSpansTheFootprintAndTheCameraFramesIt) {
     const SceneLoadResult r = load_scene_file(test_data_path("tool_export.glb"), auto_overrides());
     ASSERT_NE(r.sim, nullptr) << r.error;
     // The ground is 12 × 12 m around the origin: 0.05 m cells, 240 per side.
-    const SnowSurface& cover = r.sim->surface(covers(*r.sim)[0]);
+    const SnowSurface& cover = snow_surface(*r.sim, covers(*r.sim)[0]);
     EXPECT_FLOAT_EQ(cover.x0, -6.0f);
     EXPECT_FLOAT_EQ(cover.z0, -6.0f);
     EXPECT_FLOAT_EQ(cover.cell, 0.05f);
@@ -144,13 +146,13 @@ TEST(AutoSnow, LargeFootprintKeepsTheCoverUnder1024CellsASide) {
     const SceneLoadResult r =
         load_scene_memory(mesh_gltf(big, quad_indices), "big.gltf", auto_overrides());
     ASSERT_NE(r.sim, nullptr) << r.error;
-    const SnowSurface& cover = r.sim->surface(covers(*r.sim)[0]);
+    const SnowSurface& cover = snow_surface(*r.sim, covers(*r.sim)[0]);
     EXPECT_FLOAT_EQ(cover.cell, 0.3f);
     EXPECT_EQ(cover.nx, 1000u);
     EXPECT_EQ(cover.nz, 400u);
     // The emitter never asks for more flakes than about half the pool holds.
     float rate = 0.0f;
-    r.sim->world().each<Emitter>([&](Entity, const Emitter& e) { rate = e.rate; });
+    world_of(*r.sim).each<Emitter>([&](Entity, const Emitter& e) { rate = e.rate; });
     const float fall_seconds = r.sim->config().bounds.size().y / 1.0f;
     EXPECT_LE(rate * fall_seconds, 0.5f * static_cast<float>(r.sim->config().max_flakes) + 1.0f);
     EXPECT_GT(rate, 0.0f);
@@ -166,13 +168,13 @@ TEST(AutoSnow, SameHashForOneAndTwoThreadsAndAfterRestore) {
         one.sim->run(test_ticks / 2);
         two.sim->run(test_ticks / 2);
         ASSERT_EQ(one.sim->state_hash(), two.sim->state_hash());
-        const auto snap = one.sim->save();
+        const auto snap = save_snapshot(*one.sim);
         one.sim->run(test_ticks / 2);
         two.sim->run(test_ticks / 2);
         const std::uint64_t end = one.sim->state_hash();
         EXPECT_EQ(end, two.sim->state_hash());
         EXPECT_GT(one.sim->mass().settled, 0u);
-        one.sim->restore(*snap);
+        restore_snapshot(*one.sim, *snap);
         one.sim->run(test_ticks / 2);
         EXPECT_EQ(one.sim->state_hash(), end);
     }
@@ -183,7 +185,7 @@ TEST(AutoSnow, WithoutItThePlainFilesHaveNoSnow) {
         SCOPED_TRACE(f.name);
         const SceneLoadResult r = load_scene_file(test_data_path(f.name));
         ASSERT_NE(r.sim, nullptr) << r.error;
-        const World& w = r.sim->world();
+        const World& w = world_of(*r.sim);
         EXPECT_TRUE(covers(*r.sim).empty());
         EXPECT_EQ(w.count<MeshCollider>() + w.count<Emitter>(), 0u);
         EXPECT_EQ(w.try_resource<OcclusionCamera>(), nullptr);
@@ -242,8 +244,8 @@ TEST(AutoSnow, DeclaredPartsKeepTheirOwnDeclaration) {
     // The village declares its emitter, occlusion camera, cover and camera,
     // which stay as they are; its two porch posts, meshes without a role,
     // become mesh colliders. Its declared roles stay too.
-    const World& a = plain.sim->world();
-    const World& b = with.sim->world();
+    const World& a = world_of(*plain.sim);
+    const World& b = world_of(*with.sim);
     EXPECT_EQ(b.count<MeshCollider>(), a.count<MeshCollider>() + 2);
     EXPECT_EQ(b.count<BoxCollider>(), a.count<BoxCollider>());
     EXPECT_EQ(b.count<SphereCollider>(), a.count<SphereCollider>());
@@ -253,8 +255,8 @@ TEST(AutoSnow, DeclaredPartsKeepTheirOwnDeclaration) {
         a.each<Emitter>([&](Entity, const Emitter& declared) { EXPECT_EQ(e.rate, declared.rate); });
     });
     ASSERT_EQ(covers(*with.sim).size(), 1u);
-    EXPECT_EQ(with.sim->surface(covers(*with.sim)[0]).cell,
-              plain.sim->surface(covers(*plain.sim)[0]).cell);
+    EXPECT_EQ(snow_surface(*with.sim, covers(*with.sim)[0]).cell,
+              snow_surface(*plain.sim, covers(*plain.sim)[0]).cell);
     EXPECT_EQ(b.resource<OcclusionCamera>().resolution, a.resource<OcclusionCamera>().resolution);
     EXPECT_EQ(with.visuals.camera.position, plain.visuals.camera.position);
     with.sim->run(60);
@@ -269,12 +271,12 @@ TEST(AutoSnow, DeclaredPartsKeepTheirOwnDeclaration) {
             "emitter": {"rate": 123}}}}])");
     const SceneLoadResult r = load_scene_memory(scene, "own.gltf");
     ASSERT_NE(r.sim, nullptr) << r.error;
-    const SnowSurface& cover = r.sim->surface(covers(*r.sim)[0]);
+    const SnowSurface& cover = snow_surface(*r.sim, covers(*r.sim)[0]);
     EXPECT_FLOAT_EQ(cover.cell, 0.1f);
     EXPECT_EQ(covers(*r.sim).size(), 1u);
-    r.sim->world().each<Emitter>([](Entity, const Emitter& e) { EXPECT_EQ(e.rate, 123.0f); });
-    EXPECT_EQ(r.sim->world().count<MeshCollider>(), 1u);
-    EXPECT_NE(r.sim->world().try_resource<OcclusionCamera>(), nullptr);
+    world_of(*r.sim).each<Emitter>([](Entity, const Emitter& e) { EXPECT_EQ(e.rate, 123.0f); });
+    EXPECT_EQ(world_of(*r.sim).count<MeshCollider>(), 1u);
+    EXPECT_NE(world_of(*r.sim).try_resource<OcclusionCamera>(), nullptr);
 }
 
 TEST(AutoSnow, BadCombinationsNameTheField) {

@@ -1,9 +1,9 @@
 // The village with the effects of [LZ] and [PE] (assets/scenes/
 // village_effects.gltf: spectral far-field snow, layered fog with a puff):
 // rendered headless from the scene file, and the plain village draws neither.
-#include "game/scene/scene_loader.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -36,7 +36,7 @@ Frame render_scene(const std::string& name, std::uint64_t ticks) {
     const ViewCamera camera = ViewCamera::from_def(r.visuals.camera);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(r.sim->world(), r.visuals, camera);
+    renderer.render(*r.sim, r.visuals, camera);
     return {renderer.read_pixels(), renderer.pass_names()};
 }
 
@@ -72,7 +72,7 @@ TEST(RenderPerf, DISABLED_VillageEffectsPasses) {
         std::vector<std::vector<double>> ms;
         std::vector<double> frame;
         for (int i = 0; i < 16; ++i) {
-            renderer.render(r.sim->world(), r.visuals, camera);
+            renderer.render(*r.sim, r.visuals, camera);
             const auto& passes = renderer.timings().passes;
             ms.resize(passes.size());
             for (std::size_t p = 0; i > 0 && p < passes.size(); ++p) {

@@ -3,6 +3,7 @@
 // what snow does not use, and one clear error (exit 2 from snow_run) for a
 // broken container. Files are written by the tests themselves, plus the
 // exporter-shaped files of assets/testdata/ (scripts/make_test_gltf.py).
+#include "systems/api/simulation_internals.hpp"
 #include "tests/game/scene/scene_test_files.hpp"
 #include "tests/support/run_app.hpp"
 
@@ -334,7 +335,7 @@ TEST(SceneTestData, ExporterStyleGlbLoadsWithItsHierarchy) {
     // The crate's LINES primitive is the only thing skipped; its PNG is never decoded.
     ASSERT_EQ(r.warnings.size(), 1u) << all_warnings(r);
     EXPECT_TRUE(has_warning(r, "meshes[1].primitives[1].mode is 1 (LINES)"));
-    const World& w = r.sim->world();
+    const World& w = world_of(*r.sim);
     const auto m = meshes_by_name(r.visuals);
     ASSERT_EQ(m.size(), 4u); // Ground, Crate, Tree (trunk), Tree#1 (crown)
     EXPECT_EQ(w.count<Emitter>() + w.count<SnowSurface>() + w.count<BoxCollider>(), 0u);

@@ -1,5 +1,6 @@
 // Scene loading: the project's scenes load with the declared roles, and every
 // kind of bad input gives one error naming the file and the field, no Simulation.
+#include "systems/api/simulation_internals.hpp"
 #include "tests/game/scene/scene_test_files.hpp"
 
 #include "systems/geometry/colliders.hpp"
@@ -42,7 +43,7 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     ASSERT_NE(r.sim, nullptr) << r.error;
     EXPECT_TRUE(r.error.empty());
     EXPECT_EQ(r.name, "village");
-    const World& w = r.sim->world();
+    const World& w = world_of(*r.sim);
     EXPECT_EQ(w.count<BoxCollider>(), 4u);    // walls, porch, garage, fence
     EXPECT_EQ(w.count<SphereCollider>(), 3u); // snowman
     EXPECT_EQ(w.count<MeshCollider>(), 2u);   // roof sides
@@ -53,9 +54,9 @@ TEST(SceneLoader, VillageHasTheDeclaredRolesAndBounds) {
     EXPECT_EQ(r.visuals.lights.size(), 3u);
     EXPECT_EQ(w.count<Emitter>(), 1u);
     EXPECT_TRUE(w.has_resource<Wind>());
-    EXPECT_TRUE(w.has_resource<Fog>());
+    EXPECT_TRUE(r.visuals.fog.has_value());
     EXPECT_TRUE(w.has_resource<OcclusionCamera>());
-    EXPECT_FALSE(w.has_resource<SpectralSnow>());
+    EXPECT_FALSE(r.visuals.spectral.has_value());
     EXPECT_EQ(r.visuals.camera.position,
               glm::vec3(1.0f, 6.0f, 17.0f)); // the scene's own, not the default
 
@@ -154,11 +155,11 @@ TEST(SceneLoader, MeshRenderablesAreWorldSpaceWithUnitNormalsAndMaterialColour) 
 TEST(SceneLoader, MinimalSceneCreatesOnlyWhatItDeclares) {
     const SceneLoadResult r = load_scene_file(asset_path("minimal.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
-    const World& w = r.sim->world();
+    const World& w = world_of(*r.sim);
     EXPECT_FALSE(w.has_resource<Wind>());
-    EXPECT_FALSE(w.has_resource<Fog>());
+    EXPECT_FALSE(r.visuals.fog.has_value());
     EXPECT_FALSE(w.has_resource<OcclusionCamera>());
-    EXPECT_FALSE(w.has_resource<SpectralSnow>());
+    EXPECT_FALSE(r.visuals.spectral.has_value());
     EXPECT_EQ(w.count<BoxCollider>() + w.count<SphereCollider>() + w.count<MeshCollider>(), 0u);
     EXPECT_TRUE(r.visuals.lights.empty());
     EXPECT_EQ(w.count<SnowSurface>(), 1u);
@@ -177,13 +178,13 @@ TEST(SceneLoader, MinimalSceneCreatesOnlyWhatItDeclares) {
 TEST(SceneLoader, VillageEffectsAddsSpectralLayeredFogGustsAndAWindField) {
     const SceneLoadResult r = load_scene_file(asset_path("village_effects.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
-    const World& w = r.sim->world();
-    ASSERT_TRUE(w.has_resource<SpectralSnow>());
-    EXPECT_EQ(w.resource<SpectralSnow>().size_xy, 64u);
-    ASSERT_TRUE(w.has_resource<Fog>());
-    EXPECT_EQ(w.resource<Fog>().mode, FogMode::layered);
-    ASSERT_EQ(w.resource<Fog>().puffs.size(), 1u);
-    EXPECT_FLOAT_EQ(w.resource<Fog>().puffs[0].sigma, 1.5f);
+    const World& w = world_of(*r.sim);
+    ASSERT_TRUE(r.visuals.spectral.has_value());
+    EXPECT_EQ(r.visuals.spectral->size_xy, 64u);
+    ASSERT_TRUE(r.visuals.fog.has_value());
+    EXPECT_EQ(r.visuals.fog->mode, FogMode::layered);
+    ASSERT_EQ(r.visuals.fog->puffs.size(), 1u);
+    EXPECT_FLOAT_EQ(r.visuals.fog->puffs[0].sigma, 1.5f);
     EXPECT_FLOAT_EQ(w.resource<Wind>().gust_strength, 3.0f);
     // The buildings shape the wind, and the wind moves snow (docs/wind_field.md).
     ASSERT_TRUE(w.has_resource<WindField>());
@@ -266,7 +267,7 @@ TEST(SceneLoader, AssetOnlyFileIsAnEmptyScene) {
     const SceneLoadResult r = load_text(R"({"asset": {"version": "2.0"}})");
     ASSERT_NE(r.sim, nullptr) << r.error;
     EXPECT_TRUE(r.visuals.meshes.empty());
-    EXPECT_EQ(r.sim->world().count<Emitter>(), 0u);
+    EXPECT_EQ(world_of(*r.sim).count<Emitter>(), 0u);
     EXPECT_EQ(r.name, "test.gltf");
 }
 
@@ -376,7 +377,7 @@ TEST(SceneLoaderErrors, WrongExtrasTypesAndUnknownFields) {
     const SceneLoadResult packing =
         with(R"({"snow": {"collider": "capsule", "on_ground": true, "compaction": 0.5}})");
     ASSERT_NE(packing.sim, nullptr) << packing.error;
-    packing.sim->world().each<Body>([](Entity, const Body& b) { EXPECT_EQ(b.compaction, 0.5f); });
+    world_of(*packing.sim).each<Body>([](Entity, const Body& b) { EXPECT_EQ(b.compaction, 0.5f); });
     // Extras that are not ours are ignored.
     EXPECT_NE(with(R"({"author": "someone", "snow": {}})").sim, nullptr);
 }

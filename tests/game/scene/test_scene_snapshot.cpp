@@ -2,9 +2,9 @@
 // tests/systems/api/test_snapshot.cpp): load, run 300 ticks, save, run on as the
 // reference, restore and run the same ticks again; the state hash agrees on
 // every tick and the flakes and snow at the end, bit for bit.
-#include "game/scene/scene_loader.hpp"
 #include "tests/hard_cases/hard_case_util.hpp"
 #include "tests/support/snapshot_check.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 

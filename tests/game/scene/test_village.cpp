@@ -3,7 +3,8 @@
 // the mass books balance exactly, nothing turns non-finite, and the walker's
 // trail shows; in the time-lapse's south storm the garage's windward face
 // gathers a drift and the east roof slides onto the porch.
-#include "game/scene/scene_loader.hpp"
+#include "systems/api/simulation_internals.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ namespace {
 /// 0.5 m) at (x, z); 0 where there is none.
 double ground_depth(const Simulation& sim, float x, float z) {
     double depth = 0.0;
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         std::uint32_t ix = 0, iz = 0;
         if (s.cell_at(x, z, ix, iz) && !s.is_void(s.index(ix, iz)) &&
             s.height(s.base_level[s.index(ix, iz)]) < 0.5f) {
@@ -42,7 +43,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
     }
     // Every system ran but the wind field and its transport, which the
     // village does not declare.
-    for (const SystemStats& s : sim.schedule().stats()) {
+    for (const SystemStats& s : schedule_of(sim).stats()) {
         if (s.name == "wind_field" || s.name == "wind_transport") {
             EXPECT_EQ(s.calls, 0u) << "the village declares no wind field";
             continue;
@@ -51,7 +52,7 @@ TEST(VillageScene, TenThousandTicksOfTheWholeChain) {
     }
     // Every surface (ground, both roof sides, porch, garage, the cover) holds snow.
     std::size_t surfaces = 0;
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& s) {
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         ++surfaces;
         EXPECT_GT(s.settled_units(), 0u);
     });
@@ -89,9 +90,10 @@ std::unique_ptr<Simulation> village_in_a_south_storm() {
     SceneLoadResult r =
         load_scene_file(std::string(SNOW_SOURCE_DIR) + "/assets/scenes/village.gltf", o);
     EXPECT_TRUE(r.sim) << r.error;
-    std::vector<Entity> emitters;
-    r.sim->world().each<Emitter>([&](Entity e, const Emitter&) { emitters.push_back(e); });
-    for (const Entity e : emitters) {
+    std::vector<EmitterId> emitters;
+    world_of(*r.sim).each<Emitter>(
+        [&](Entity e, const Emitter&) { emitters.push_back(id_of<EmitterId>(e)); });
+    for (const EmitterId e : emitters) {
         r.sim->set_emitter_rate(e, 40000.0f);
     }
     return std::move(r.sim);
@@ -131,18 +133,18 @@ TEST(VillageScene, SouthStormBuildsADriftAtTheGaragesWindwardFace) {
 TEST(VillageScene, TheEastRoofSlidesOntoThePorch) {
     const auto sim = village_in_a_south_storm();
     ASSERT_TRUE(sim);
-    Entity east_roof = null_entity, porch = null_entity;
-    sim->world().each<SnowSurface>([&](Entity e, const SnowSurface& s) {
+    SurfaceId east_roof, porch;
+    world_of(*sim).each<SnowSurface>([&](Entity e, const SnowSurface& s) {
         if (s.slide_units != 0 && s.slide_to_high) {
-            east_roof = e; // slides towards +x
+            east_roof = id_of<SurfaceId>(e); // slides towards +x
         } else if (s.x0 > -0.5f && s.x0 < 0.0f) {
-            porch = e; // from x = -0.45, below the east eave at x = -0.1
+            porch = id_of<SurfaceId>(e); // from x = -0.45, below the east eave at x = -0.1
         }
     });
-    ASSERT_NE(east_roof, null_entity);
-    ASSERT_NE(porch, null_entity);
+    ASSERT_FALSE(east_roof.is_null());
+    ASSERT_FALSE(porch.is_null());
     // 4 cm on every cell of the east roof: past its 3 cm slide depth.
-    const SnowSurface& roof = sim->surface(east_roof);
+    const SnowSurface& roof = snow_surface(*sim, east_roof);
     const auto units = static_cast<std::uint32_t>(0.04 / roof.unit_height);
     for (std::uint32_t iz = 0; iz < roof.nz; ++iz) {
         for (std::uint32_t ix = 0; ix < roof.nx; ++ix) {
@@ -150,12 +152,12 @@ TEST(VillageScene, TheEastRoofSlidesOntoThePorch) {
         }
     }
     const std::uint64_t loaded = roof.settled_units();
-    const std::uint64_t porch_before = sim->surface(porch).settled_units();
+    const std::uint64_t porch_before = snow_surface(*sim, porch).settled_units();
     sim->run(45); // 1.5 s: the slab has fallen; little new snow in that time
     ASSERT_TRUE(sim->mass().balanced());
     EXPECT_LT(roof.settled_units(), loaded / 10) << "the roof slid";
     // The porch lies below half of the eave (z -2.2..0.2 of -3.4..1.4).
-    const std::uint64_t gained = sim->surface(porch).settled_units() - porch_before;
+    const std::uint64_t gained = snow_surface(*sim, porch).settled_units() - porch_before;
     RecordProperty("slid_units", std::to_string(loaded - roof.settled_units()));
     RecordProperty("porch_gained_units", std::to_string(gained));
     EXPECT_GT(gained, loaded / 3) << gained << " of the " << loaded << " units that slid";

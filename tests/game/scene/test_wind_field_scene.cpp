@@ -1,9 +1,10 @@
 // `extras.snow.wind.field` (issue #15): a scene declares the field, bad values
 // give one error naming the field, and in the village the field changes how
 // much snow lands leeward of the garage.
-#include "game/scene/scene_loader.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/snowpack/ground_snow.hpp"
 #include "tests/support/asset_text.hpp"
+#include <snow/scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,7 @@ TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
         load(village_with_field("\"cells\": [40, 12, 40], \"update_every\": 2, "
                                 "\"sample_every\": 8"));
     ASSERT_TRUE(r.sim) << r.error;
-    const auto* f = r.sim->world().try_resource<WindField>();
+    const auto* f = world_of(*r.sim).try_resource<WindField>();
     ASSERT_NE(f, nullptr);
     EXPECT_EQ(f->n[0], 40u);
     EXPECT_EQ(f->n[1], 12u);
@@ -45,7 +46,7 @@ TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
     EXPECT_EQ(f->def.sample_every, 8u);
     const SceneLoadResult plain = load(village_text());
     ASSERT_TRUE(plain.sim) << plain.error;
-    EXPECT_FALSE(plain.sim->world().has_resource<WindField>());
+    EXPECT_FALSE(world_of(*plain.sim).has_resource<WindField>());
 }
 
 TEST(WindFieldScene, BadFieldsGiveOneErrorNamingTheField) {
@@ -70,7 +71,7 @@ TEST(WindFieldScene, BadFieldsGiveOneErrorNamingTheField) {
 /// Snow units on the ground in the strip 0.25 – 2.25 m behind the garage's
 /// lee face (x 7.25 – 9.25), along its width (z −3 – 0).
 std::uint64_t lee_strip_units(const Simulation& sim) {
-    return ground_units_in(sim.world(), {7.25f, -3.0f, 9.25f, 0.0f});
+    return ground_units_in(world_of(sim), {7.25f, -3.0f, 9.25f, 0.0f});
 }
 
 TEST(WindFieldScene, SnowDropsOutInTheLeeOfTheGarage) {

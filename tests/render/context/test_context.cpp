@@ -1,12 +1,11 @@
 // Context backends: OSMesa headless, the automatic fallback and why it fell
 // back, switching contexts, and a GLFW window under Xvfb.
-#include "render/context/gl_context.hpp"
 #include "render/context/glfw_context.hpp"
-#include "render/context/make_context.hpp"
-#include "render/render_error.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
 #include "tests/support/xvfb.hpp"
+#include <snow/error.hpp>
+#include <snow/render.hpp>
 
 #include <gtest/gtest.h>
 
@@ -72,10 +71,10 @@ TEST(RenderContext, SwitchingBetweenContextsReloadsEntryPoints) {
     auto b = headless_context();
     Renderer rb(*b);
     a->make_current();
-    ra.render(scene.world, scene.visuals, scene.camera);
+    render_world(ra, scene.world, scene.visuals, scene.camera);
     const Image ia = ra.read_pixels();
     b->make_current();
-    rb.render(scene.world, scene.visuals, scene.camera);
+    render_world(rb, scene.world, scene.visuals, scene.camera);
     const Image ib = rb.read_pixels();
     EXPECT_EQ(compare_images(ia, ib).worst, 0);
     a->make_current(); // leave `a` current for its renderer's destruction
@@ -100,7 +99,7 @@ TEST(RenderContext, EglSurfacelessDrawsLikeOsMesa) {
     Image egl;
     {
         Renderer renderer(*context);
-        renderer.render(scene.world, scene.visuals, scene.camera);
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
         egl = renderer.read_pixels();
     }
     const ImageComparison c = compare_images(egl, osmesa);
@@ -136,7 +135,7 @@ TEST(RenderContext, GlfwWindowUnderXvfbDrawsLikeHeadless) {
         ASSERT_EQ(context->framebuffer_size(), glm::ivec2(golden_width, golden_height));
         EXPECT_FALSE(context->should_close());
         Renderer renderer(*context);
-        renderer.render(scene.world, scene.visuals, scene.camera);
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
         windowed = renderer.read_pixels();
         context->swap_buffers();
         context->poll_events();

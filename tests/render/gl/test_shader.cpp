@@ -1,7 +1,7 @@
 // Shader programs: errors carry the driver's info log; every built-in variant compiles.
 #include "render/gl/shader.hpp"
+#include "render/gl/shader_error.hpp"
 #include "render/gl/shader_sources.hpp"
-#include "render/render_error.hpp"
 #include "tests/render/render_fixture.hpp"
 
 #include <gtest/gtest.h>

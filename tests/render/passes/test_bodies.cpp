@@ -1,7 +1,7 @@
 // Moving bodies drawn at their pose: a snowball where its Body is (and gone
 // from where it was), a capsule's core pulled out between its hemispheres, an
 // eye inside a body seeing out, and the pass only for worlds with bodies.
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "systems/bodies/body.hpp"
 #include "tests/render/render_fixture.hpp"
 
@@ -102,11 +102,11 @@ TEST(RenderBodies, PassOnlyForWorldsWithBodies) {
     const SceneVisuals visuals;
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(world, visuals, front_camera());
+    render_world(renderer, world, visuals, front_camera());
     std::vector<std::string> names = renderer.pass_names();
     EXPECT_EQ(std::count(names.begin(), names.end(), "bodies"), 0);
     add(world, snowball_at({0.0f, 1.0f, 0.0f}));
-    renderer.render(world, visuals, front_camera());
+    render_world(renderer, world, visuals, front_camera());
     const std::vector<std::string> with = {"sky", "meshes", "bodies", "snow_surfaces", "flakes"};
     EXPECT_EQ(renderer.pass_names(), with);
 }

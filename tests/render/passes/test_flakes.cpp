@@ -1,7 +1,7 @@
 // Flakes as point sprites ([ZCL], [SKY]): selection (alive, frustum, level of
 // detail), drawing, far flakes fainter.
 #include "render/passes/flake_selection.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "systems/flakes/flake_pool.hpp"
 #include "tests/render/render_fixture.hpp"
 
@@ -152,7 +152,7 @@ TEST(RenderFlakes, PassRunsOnlyWithAliveFlakes) {
     const SceneVisuals visuals;
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(w, visuals, looking_down_minus_z());
+    render_world(renderer, w, visuals, looking_down_minus_z());
     const auto flakes_ran = [&] {
         for (const PassTiming& p : renderer.timings().passes) {
             if (p.name == "flakes") {
@@ -164,10 +164,10 @@ TEST(RenderFlakes, PassRunsOnlyWithAliveFlakes) {
     EXPECT_FALSE(flakes_ran());
     FlakePool& pool = w.set_resource<FlakePool>();
     pool.reset(4);
-    renderer.render(w, visuals, looking_down_minus_z());
+    render_world(renderer, w, visuals, looking_down_minus_z());
     EXPECT_FALSE(flakes_ran()) << "an empty pool draws nothing";
     add_flake(pool, {0.0f, 0.0f, -3.0f});
-    renderer.render(w, visuals, looking_down_minus_z());
+    render_world(renderer, w, visuals, looking_down_minus_z());
     EXPECT_TRUE(flakes_ran());
     EXPECT_EQ(renderer.timings().flakes_drawn, 1u);
     EXPECT_EQ(renderer.timings().flakes_alive, 1u);

@@ -1,7 +1,7 @@
 // Fog ([PE], [SKY]): the E(y) table, where fog changes the image, and that a
 // world without Fog compiles and runs no fog code.
 #include "render/passes/fog_table.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -82,7 +82,7 @@ TEST(RenderFog, NonFiniteFogNumbersGiveNoFogNotGarbage) {
     half_life.half_distance = -INFINITY;
     for (const Fog& bad :
          {exponential, half_life, layer(NAN, 1.0f, 0.5f), layer(0.0f, 1.0f, NAN)}) {
-        field.world.set_resource<Fog>(bad);
+        field.visuals.fog = bad;
         const ImageComparison c = compare_images(field.render(), clear);
         EXPECT_EQ(c.pixels_over, 0u) << "fog mode " << static_cast<int>(bad.mode);
     }
@@ -95,7 +95,7 @@ TEST(RenderFog, ExponentialFogChangesFarPixelsMuchMoreThanNear) {
     fog.mode = FogMode::exponential;
     fog.density = 0.02f;
     fog.color = {0.0f, 0.0f, 0.0f};
-    field.world.set_resource<Fog>(fog);
+    field.visuals.fog = fog;
     const Image fogged = field.render();
     // Near: the bottom of the image (~2.6 m away); far: ground 40 m away.
     const glm::ivec2 near_px{golden_width / 2, golden_height - 3};
@@ -112,7 +112,7 @@ TEST(RenderFog, LayeredFogLeavesRaysAboveTheLayerUntouched) {
     const Image clear = field.render();
     Fog fog = layer(0.0f, 1.0f, 0.5f);
     fog.color = {0.0f, 0.0f, 0.0f};
-    field.world.set_resource<Fog>(fog);
+    field.visuals.fog = fog;
     const Image fogged = field.render();
     // The eye is above the layer: rays that go up never enter it.
     EXPECT_LT(mean_diff(clear, fogged, {golden_width / 2, 4}, 3), 0.5f);
@@ -128,15 +128,15 @@ TEST(RenderFog, WorldWithoutFogCompilesAndRunsNoFogCode) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     for (const std::string& v : renderer.compiled_variants()) {
         EXPECT_EQ(v.find("FOG"), std::string::npos) << v;
     }
     EXPECT_FALSE(renderer.timings().passes.at(1).ran) << "the fogged sky pass ran";
     EXPECT_EQ(renderer.timings().passes.at(1).name, "sky");
 
-    scene.world.set_resource<Fog>(layer(0.0f, 1.0f, 0.5f));
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    scene.visuals.fog = layer(0.0f, 1.0f, 0.5f);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_TRUE(renderer.timings().passes.at(1).ran);
     std::size_t fog_variants = 0;
     for (const std::string& v : renderer.compiled_variants()) {

@@ -2,7 +2,7 @@
 // puffs against numeric integration, on the CPU (double) and in the shader
 // (float, through a probe that runs the pass's GLSL), and the pass itself.
 #include "render/passes/fog_puffs.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -170,7 +170,7 @@ struct PuffField {
         fog.density = 0.0f;
         fog.color = glm::vec3(1.0f);
         fog.puffs = std::move(puffs);
-        world.set_resource<Fog>(fog);
+        visuals.fog = fog;
         CameraDef def;
         def.position = {0.0f, 1.0f, 8.0f};
         def.target = {0.0f, 1.0f, 0.0f};
@@ -237,7 +237,7 @@ TEST(RenderGolden, FixtureWithLayeredFogAndPuffs) {
     fog.layer_top = 1.5f;
     fog.layer_density = 0.2f;
     fog.puffs = fixture_puffs();
-    scene.world.set_resource<Fog>(fog);
+    scene.visuals.fog = fog;
     EXPECT_TRUE(
         matches_golden(render_image(scene.world, scene.visuals, scene.camera), "scene_fog_puffs"));
 }
@@ -249,14 +249,14 @@ TEST(RenderPerf, DISABLED_FogPuffPass) {
     Fog fog;
     fog.mode = FogMode::layered;
     fog.puffs = fixture_puffs();
-    scene.world.set_resource<Fog>(fog);
+    scene.visuals.fog = fog;
     auto context = headless_context(640, 480);
     RenderSettings settings;
     settings.timing_mode = true;
     Renderer renderer(*context, settings);
     std::vector<double> pass_ms;
     for (int i = 0; i < 16; ++i) {
-        renderer.render(scene.world, scene.visuals, scene.camera);
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
         for (const PassTiming& p : renderer.timings().passes) {
             if (p.name == "fog_puffs" && i > 0) {
                 pass_ms.push_back(p.cpu_ms);

@@ -1,7 +1,7 @@
 // Snow on surfaces: sky exposure and incline [SKY], heightfields with
 // skirts [WF §6] that leave no crack at borders, eaves or between levels
 // of detail, re-upload of the changed tiles only.
-#include "render/renderer.hpp"
+#include "render/renderer_internals.hpp"
 #include "systems/sky/occlusion.hpp"
 #include "tests/render/render_fixture.hpp"
 
@@ -221,7 +221,7 @@ TEST(RenderSnowCover, LevelsOfDetailMeetWithoutCracks) {
     camera.look_at({0.0f, 0.5f, 0.0f});
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(world, visuals, camera);
+    render_world(renderer, world, visuals, camera);
     const Image image = renderer.read_pixels();
     EXPECT_GT(renderer.timings().surface_tiles_drawn, 60u);
     // In each column, below the first snow pixel from the top (the hills'
@@ -268,10 +268,10 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 2u);
     EXPECT_EQ(renderer.timings().meshes_uploaded, scene.visuals.meshes.size());
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
     EXPECT_EQ(renderer.timings().meshes_uploaded, 0u);
     const Image before = renderer.read_pixels();
@@ -280,7 +280,7 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     for (std::uint32_t& cell : roof.snow) {
         cell += 100; // 0.2 m more snow everywhere on the roof
     }
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u) << "the 30 x 30 roof is one tile";
     const Image after = renderer.read_pixels();
@@ -289,12 +289,12 @@ TEST(RenderSnowCover, SurfacesReuploadOnlyWhenTheirSnowChanges) {
     // One ground cell changes: only its tile of the 48 x 48 ground goes up again.
     SnowSurface& ground = scene.world.get<SnowSurface>(scene.ground_surface);
     ground.snow[ground.index(40, 3)] += 1;
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 1u);
     EXPECT_EQ(renderer.timings().surface_tiles_uploaded, 1u);
 
     scene.world.destroy(scene.house_roof);
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     EXPECT_EQ(renderer.timings().surfaces_uploaded, 0u);
 }
 

@@ -2,8 +2,8 @@
 // limited with power ∝ 1/|ω| and on the dispersion surface; the pass draws it
 // only beyond the particles and only for worlds that declare it.
 #include "render/passes/spectral_volume.hpp"
-#include "render/renderer.hpp"
-#include "systems/api/simulation.hpp"
+#include "render/renderer_internals.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/flakes/flake_pool.hpp"
 #include "tests/render/render_fixture.hpp"
 
@@ -239,7 +239,7 @@ void add_layer(FixtureScene& scene, float start) {
     SpectralSnow s = small_layer();
     s.opacity = 0.7f;
     s.start_distance = start;
-    scene.world.set_resource<SpectralSnow>(s);
+    scene.visuals.spectral = s;
 }
 
 TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
@@ -247,7 +247,7 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     build_fixture(scene);
     auto context = headless_context();
     Renderer renderer(*context);
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> builtin = {"sky", "meshes", "snow_surfaces", "flakes"};
     EXPECT_EQ(renderer.pass_names(), builtin);
     for (const std::string& v : renderer.compiled_variants()) {
@@ -258,8 +258,8 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     add_layer(scene, 10.0f);
     Fog fog;
     fog.puffs.push_back(FogPuff{{0.0f, 1.0f, 0.0f}, 1.0f, 0.5f, {}, 0.0f});
-    scene.world.set_resource<Fog>(fog);
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    scene.visuals.fog = fog;
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     const std::vector<std::string> effects = {"sky",           "meshes", "snow_surfaces",
                                               "spectral_snow", "flakes", "fog_puffs"};
     EXPECT_EQ(renderer.pass_names(), effects);
@@ -275,32 +275,13 @@ TEST(RenderSpectral, PassesExistOnlyForWorldsThatDeclareTheEffects) {
     EXPECT_EQ(puff_variants, 1u);
 
     // The effects removed again: their passes stay in the list but skip.
-    scene.world.erase_resource<SpectralSnow>();
-    scene.world.erase_resource<Fog>();
-    renderer.render(scene.world, scene.visuals, scene.camera);
+    scene.visuals.spectral.reset();
+    scene.visuals.fog.reset();
+    render_world(renderer, scene.world, scene.visuals, scene.camera);
     for (const PassTiming& p : renderer.timings().passes) {
         EXPECT_EQ(p.ran, p.name != "spectral_snow" && p.name != "fog_puffs" && p.name != "sky")
             << p.name;
     }
-}
-
-TEST(RenderSpectral, TheTickHasNoSystemForRenderOnlyEffects) {
-    // Spectral snow and fog are drawn, never simulated: declaring them adds no
-    // system to the schedule (snow_run's report lists the same systems).
-    Simulation plain;
-    Simulation effects;
-    effects.set_spectral(SpectralSnow{});
-    Fog fog;
-    fog.puffs.push_back(FogPuff{});
-    effects.set_fog(fog);
-    EXPECT_EQ(plain.schedule().names(), effects.schedule().names());
-    for (const std::string& name : effects.schedule().names()) {
-        EXPECT_EQ(name.find("spectral"), std::string::npos) << name;
-        EXPECT_EQ(name.find("fog"), std::string::npos) << name;
-    }
-    effects.run(3);
-    plain.run(3);
-    EXPECT_EQ(plain.state_hash(), effects.state_hash());
 }
 
 TEST(RenderSpectral, LayerCoversTheFarFieldAndLeavesNearSurfacesAlone) {
@@ -393,7 +374,7 @@ TEST(RenderSpectral, FarFieldMeetsTheHorizonWithoutASeam) {
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
     s.opacity = 0.6f;
-    scene.world.set_resource<SpectralSnow>(s);
+    scene.visuals.spectral = s;
     const Image with = render_image(scene.world, scene.visuals, scene.camera, dark_ground);
     const std::vector<double> rows = layer_by_row(with, without);
     const int horizon = to_pixel(scene.camera, {0.0f, 0.0f, scene.far_edge_z}).y;
@@ -452,16 +433,17 @@ TEST(RenderSpectral, FlakesHandOverToTheLayerBeyondTheHandOverDistance) {
     settings.flake_lod = FlakeLod::never;
     auto context = headless_context();
     Renderer renderer(*context, settings);
-    renderer.render(world, SceneVisuals{}, camera);
+    SceneVisuals visuals;
+    render_world(renderer, world, visuals, camera);
     EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
-    world.set_resource<SpectralSnow>(s);
-    renderer.render(world, SceneVisuals{}, camera);
+    visuals.spectral = s;
+    render_world(renderer, world, visuals, camera);
     EXPECT_NEAR(renderer.timings().flakes_drawn, 4000.0 * (12.0 / 30.0) * (12.0 / 30.0), 60.0);
     // A start of 0 puts the layer everywhere and leaves the flakes alone.
-    world.resource<SpectralSnow>().start_distance = 0.0f;
-    renderer.render(world, SceneVisuals{}, camera);
+    visuals.spectral->start_distance = 0.0f;
+    render_world(renderer, world, visuals, camera);
     EXPECT_EQ(renderer.timings().flakes_drawn, 4000u);
 }
 
@@ -473,7 +455,7 @@ TEST(RenderGolden, FarFieldTakesOverFromTheFlakesAtTheHorizon) {
     scatter_flakes(scene.world, 3000, {-15.0f, 0.2f, -30.0f}, {15.0f, 8.2f, 8.0f}, 0.012f, 0.024f);
     SpectralSnow s = small_layer();
     s.start_distance = 25.0f;
-    scene.world.set_resource<SpectralSnow>(s);
+    scene.visuals.spectral = s;
     RenderSettings dark_ground; // bare albedo, so the white snow shows on the ground too
     dark_ground.mesh_snow = 0.0f;
     EXPECT_TRUE(matches_golden(render_image(scene.world, scene.visuals, scene.camera, dark_ground),
@@ -517,14 +499,14 @@ TEST(RenderPerf, DISABLED_SpectralVolumeBuildAndPass) {
     }
     FixtureScene scene;
     build_fixture(scene);
-    scene.world.set_resource<SpectralSnow>();
+    scene.visuals.spectral = SpectralSnow{};
     auto context = headless_context(640, 480);
     RenderSettings settings;
     settings.timing_mode = true;
     Renderer renderer(*context, settings);
     std::vector<double> pass_ms, frame_ms;
     for (int i = 0; i < 16; ++i) {
-        renderer.render(scene.world, scene.visuals, scene.camera);
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
         if (i == 0) {
             continue; // the first frame builds the volume
         }

@@ -1,9 +1,9 @@
 // The CPU half of the tiled snow heightfield (render/passes/surface_tiles.hpp): patch
 // index lists with skirts, the level for a distance, per-tile change
 // detection, culling and the texels a tile uploads.
-#include "render/camera.hpp"
 #include "render/passes/surface_tiles.hpp"
 #include "tests/render/render_fixture.hpp"
+#include <snow/render.hpp>
 
 #include <gtest/gtest.h>
 

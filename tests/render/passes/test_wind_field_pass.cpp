@@ -3,8 +3,8 @@
 // still and red where it is fastest; drawn only when asked for and only for
 // a world with a field, and it reads the field without changing it.
 #include "render/passes/wind_arrows.hpp"
-#include "render/renderer.hpp"
-#include "systems/api/simulation.hpp"
+#include "render/renderer_internals.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/render/render_fixture.hpp"
 #include "tests/support/steady_field.hpp"
 
@@ -51,7 +51,7 @@ Drawn draw(const Simulation& sim, bool show) {
     RenderSettings settings;
     settings.show_wind_field = show;
     Renderer renderer(*context, settings);
-    renderer.render(sim.world(), SceneVisuals{}, above_the_yard());
+    renderer.render(sim, SceneVisuals{}, above_the_yard());
     Drawn d{renderer.read_pixels(), renderer.pass_names()};
     for (const PassTiming& p : renderer.timings().passes) {
         d.arrows_ran = d.arrows_ran || (p.name == "wind_field" && p.ran);
@@ -83,7 +83,7 @@ TEST(RenderWindField, AWorldWithoutAFieldDrawsNoArrows) {
 TEST(RenderWindField, ArrowsAreFewAndColouredBySpeed) {
     auto sim = box_in_wind(true);
     WindArrows a;
-    wind_arrows(sim->world().resource<WindField>(), a);
+    wind_arrows(world_of(*sim).resource<WindField>(), a);
     EXPECT_GT(a.arrows, 100u);
     EXPECT_LE(a.arrows, wind_arrows_across * wind_arrow_layers * wind_arrows_across);
     EXPECT_EQ(a.vertices.size(), std::size_t{a.arrows} * wind_arrow_segments * 2 * 6);

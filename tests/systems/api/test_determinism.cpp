@@ -1,6 +1,7 @@
 // Determinism as Box2D and Jolt test it (docs/design.md "Determinism"): the
 // same scene and seed give the same state hash run after run, and 1 and 2
 // threads agree on every tick.
+#include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 #include "tests/support/share_work.hpp"
 
@@ -76,10 +77,10 @@ TEST(Determinism, PinnedHashHoldsInEveryBuild) {
 TEST(Determinism, SaveRestoreReplaysExactly) {
     auto sim = busy(1);
     sim->run(100);
-    const auto snap = sim->save();
+    const auto snap = save_snapshot(*sim);
     sim->run(150);
     const std::uint64_t first = sim->state_hash();
-    sim->restore(*snap);
+    restore_snapshot(*sim, *snap);
     sim->run(150);
     EXPECT_EQ(sim->state_hash(), first);
 }

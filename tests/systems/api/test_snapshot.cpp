@@ -3,7 +3,7 @@
 // simulation, on a twin that never ran, and on 1 or 2 threads), and
 // state_hash() changes with every kind of state, so neither can silently
 // miss one. The scenes of assets/scenes are checked in tests/game.
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/geometry/colliders.hpp"
 #include "tests/hard_cases/hard_case_util.hpp"
@@ -27,7 +27,7 @@ FlakePool& pool(Simulation& s) {
 }
 /// An alive slot of the pool.
 std::uint32_t alive_slot(const Simulation& s) {
-    const FlakePool& f = s.flakes();
+    const FlakePool& f = flake_pool(s);
     std::uint32_t i = 0;
     while (!f.is_alive(i)) {
         ++i;
@@ -68,7 +68,8 @@ TEST(Snapshot, RestoredStormContinuesBitForBit) {
     EXPECT_GT(c.occlusion_refreshes, 3u) << "the sky map never followed the wind";
     EXPECT_GT(c.spilled_units, 0u);
     EXPECT_GT(c.rolled, 0u);
-    EXPECT_GT(sim->world().resource<MassLedger>().removed_bare, 0u) << "no flake met the bare mesh";
+    EXPECT_GT(world_of(*sim).resource<MassLedger>().removed_bare, 0u)
+        << "no flake met the bare mesh";
     EXPECT_GT(c.carved_units, 0u) << "the snowball never rolled through snow";
     EXPECT_GT(sim->mass().carried, 0u) << "the snowball carries nothing";
     EXPECT_GT(cover(*sim).settled_units(), 0u) << "no snow on the cover";
@@ -78,7 +79,7 @@ TEST(Snapshot, RestoredStormContinuesBitForBit) {
 TEST(Snapshot, RestoreIntoATwinOnOneOrTwoThreadsContinuesBitForBit) {
     auto source = make_stormy_yard(1);
     source->run(300);
-    const auto snap = source->save();
+    const auto snap = save_snapshot(*source);
     const std::vector<std::uint64_t> reference = test::hashes_per_tick(*source, ahead_ticks);
     const test::RunEnd reference_end = test::run_end(*source);
     for (const unsigned threads : {1u, 2u}) {
@@ -86,7 +87,7 @@ TEST(Snapshot, RestoreIntoATwinOnOneOrTwoThreadsContinuesBitForBit) {
         // after the restore.
         auto twin = make_stormy_yard(threads);
         test::share_work_at_any_size(*twin);
-        twin->restore(*snap);
+        restore_snapshot(*twin, *snap);
         for (std::uint64_t t = 0; t < ahead_ticks; ++t) {
             twin->tick();
             ASSERT_EQ(twin->state_hash(), reference[t])
@@ -110,17 +111,17 @@ TEST(Snapshot, RestoreRightAfterAGeometryChange) {
     auto sim = make_stormy_yard(1);
     sim->run(50);
     sim->add_box({{4.0f, 0.0f, 3.0f}, {6.0f, 2.0f, 5.0f}});
-    const Entity under_cover = sim->add_sphere({6.0f, 0.5f, 6.0f}, 0.5f);
+    const ColliderId under_cover = sim->add_sphere({6.0f, 0.5f, 6.0f}, 0.5f);
     const std::vector<std::int64_t> base = cover(*sim).base_level;
     test::expect_restore_replays(*sim, 0, 60);
     EXPECT_NE(cover(*sim).base_level, base) << "the cover never followed the new sphere";
     // And restored after the geometry changed back: the cover follows it again.
     sim->run(20);
-    const auto snap = sim->save();
+    const auto snap = save_snapshot(*sim);
     sim->remove(under_cover);
     sim->run(20);
     const std::uint64_t without = sim->state_hash();
-    sim->restore(*snap);
+    restore_snapshot(*sim, *snap);
     EXPECT_NE(sim->state_hash(), without);
     sim->run(20);
     EXPECT_EQ(sim->state_hash(), without) << "a restored cover must follow the current geometry";
@@ -131,7 +132,8 @@ TEST(Snapshot, RejectsASnapshotOfAnotherScene) {
         auto sim = make_stormy_yard(1);
         auto more = make_stormy_yard(1);
         more->add_body(BodyDef{});
-        EXPECT_THROW(sim->restore(*more->save()), SimulationError) << "a body too many";
+        EXPECT_THROW(restore_snapshot(*sim, *save_snapshot(*more)), SimulationError)
+            << "a body too many";
     }
     auto sim = make_stormy_yard(1);
     sim->run(5);
@@ -139,11 +141,11 @@ TEST(Snapshot, RejectsASnapshotOfAnotherScene) {
     YardOptions small;
     small.max_flakes = 100;
     auto other = make_yard(small);
-    EXPECT_THROW(sim->restore(*other->save()), SimulationError);
+    EXPECT_THROW(restore_snapshot(*sim, *save_snapshot(*other)), SimulationError);
     YardOptions same_pool;
     same_pool.max_flakes = 60000;
     auto fewer_surfaces = make_yard(same_pool);
-    EXPECT_THROW(sim->restore(*fewer_surfaces->save()), SimulationError);
+    EXPECT_THROW(restore_snapshot(*sim, *save_snapshot(*fewer_surfaces)), SimulationError);
     EXPECT_EQ(sim->state_hash(), before);
 }
 
@@ -250,15 +252,18 @@ std::vector<Change> changes() {
     });
     c.push_back({"body velocity",
                  [](Simulation& s) {
-                     s.set_body_velocity(InternalAccess::world(s).pool<Body>().entities().front(),
-                                         {1, 0, 0});
+                     s.set_body_velocity(
+                         id_of<BodyId>(InternalAccess::world(s).pool<Body>().entities().front()),
+                         {1, 0, 0});
                  },
                  true});
     c.push_back({"body path",
                  [](Simulation& s) {
                      BodyMotion m;
                      m.waypoints = {{0, 0, -6}, {2, 0, -6}};
-                     s.set_body_motion(InternalAccess::world(s).pool<Body>().entities().front(), m);
+                     s.set_body_motion(
+                         id_of<BodyId>(InternalAccess::world(s).pool<Body>().entities().front()),
+                         m);
                  },
                  true});
     c.push_back({"sky map lean", [](Simulation& s) { sky_map(s).wind_angle += 0.1f; }, true});
@@ -289,7 +294,8 @@ std::vector<Change> changes() {
     c.push_back({"a body", [](Simulation& s) { s.add_body(BodyDef{}); }, false});
     c.push_back({"removing a solid",
                  [](Simulation& s) {
-                     s.remove(InternalAccess::world(s).pool<SphereCollider>().entities().front());
+                     s.remove(id_of<ColliderId>(
+                         InternalAccess::world(s).pool<SphereCollider>().entities().front()));
                  },
                  false});
     return c;
@@ -302,7 +308,7 @@ TEST(Snapshot, StateHashSeesEveryKindOfStateAndRestoreUndoesTickState) {
     // leaves sources alone.
     auto shared = make_stormy_yard(1);
     shared->run(40);
-    const auto start = shared->save();
+    const auto start = save_snapshot(*shared);
     for (const Change& change : changes()) {
         SCOPED_TRACE(change.what);
         std::unique_ptr<Simulation> fresh;
@@ -310,15 +316,15 @@ TEST(Snapshot, StateHashSeesEveryKindOfStateAndRestoreUndoesTickState) {
             fresh = make_stormy_yard(1);
             fresh->run(40);
         } else {
-            shared->restore(*start);
+            restore_snapshot(*shared, *start);
         }
         Simulation* sim = change.tick_state ? shared.get() : fresh.get();
         const std::uint64_t before = sim->state_hash();
-        const auto snap = sim->save();
+        const auto snap = save_snapshot(*sim);
         change.apply(*sim);
         EXPECT_NE(sim->state_hash(), before) << "state_hash misses " << change.what;
         if (change.tick_state) {
-            sim->restore(*snap);
+            restore_snapshot(*sim, *snap);
             EXPECT_EQ(sim->state_hash(), before) << "restore misses " << change.what;
         }
         ++checked;

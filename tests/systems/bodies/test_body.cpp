@@ -1,7 +1,7 @@
 // Moving bodies: trails with raised rims, mass-exact; a snowball that grows
 // by exactly what it takes; swept trenches at speed; flakes pushed aside;
 // determinism and restore with bodies; bad input rejected.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/api/validation.hpp"
 #include "tests/support/even_snow.hpp"
 #include "tests/support/share_work.hpp"
@@ -31,7 +31,7 @@ SimConfig world_config(unsigned threads = 1) {
 /// A 4 m ground surface with 10 cm of snow in every cell.
 struct SnowyGround {
     Simulation sim;
-    Entity ground;
+    SurfaceId ground;
     explicit SnowyGround(unsigned threads = 1) : sim(world_config(threads)) {
         SurfaceDef d;
         d.x0 = d.z0 = -2.0f;
@@ -41,7 +41,7 @@ struct SnowyGround {
         ground = sim.add_surface(d);
         test::snow_every_cell(sim, ground, depth_units);
     }
-    const SnowSurface& s() const { return sim.surface(ground); }
+    const SnowSurface& s() const { return snow_surface(sim, ground); }
     std::uint32_t at(float x, float z) const {
         std::uint32_t ix = 0, iz = 0;
         EXPECT_TRUE(s().cell_at(x, z, ix, iz));
@@ -66,7 +66,7 @@ TEST(Body, TrenchDepthMatchesTheSinkingAndRimsHoldTheSnow) {
     SnowyGround g;
     // Bottom 4 cm below the 10 cm snow top: a 4 cm deep trench.
     const float r = 0.25f;
-    const Entity b = g.sim.add_body(ball(-1.5f, 0.06f + r, r));
+    const BodyId b = g.sim.add_body(ball(-1.5f, 0.06f + r, r));
     g.sim.set_body_velocity(b, {1.0f, 0.0f, 0.0f});
     const std::uint64_t settled = g.s().settled_units();
     g.run(66); // 1.1 m: the body is 10 cm past x = -0.5
@@ -85,7 +85,7 @@ TEST(Body, AFastBodyLeavesAContinuousTrench) {
     SnowyGround g;
     BodyDef d = ball(-1.8f, 0.0f, 0.2f);
     d.on_ground = true; // rolls on the bare ground: the trench goes down to it
-    const Entity b = g.sim.add_body(d);
+    const BodyId b = g.sim.add_body(d);
     g.sim.set_body_velocity(b, {60.0f, 0.0f, 0.0f}); // a metre per tick, 20 cells
     g.run(3);
     // Down to the ground all along (smoothing lets a little back in from the rims).
@@ -96,7 +96,7 @@ TEST(Body, AFastBodyLeavesAContinuousTrench) {
 
 TEST(Body, SnowfallFillsATrailAgain) {
     SnowyGround g;
-    const Entity b = g.sim.add_body(ball(-1.5f, 0.0f, 0.2f));
+    const BodyId b = g.sim.add_body(ball(-1.5f, 0.0f, 0.2f));
     g.sim.set_body_motion(b, BodyMotion{{{-1.5f, 0.2f, 0.0f}, {1.5f, 0.2f, 0.0f}}, 2.0f, false});
     g.run(120);
     const std::uint32_t carved = g.at(0.0f, 0.0f);
@@ -114,10 +114,10 @@ TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
     d.on_ground = true;
     d.snowball = true;
     d.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.0f, false};
-    const Entity b = g.sim.add_body(d);
+    const BodyId b = g.sim.add_body(d);
     const std::uint64_t settled = g.s().settled_units();
     g.run(180);
-    const Body& body = g.sim.body(b);
+    const Body& body = body_of(g.sim, b);
     ASSERT_GT(body.carried, 0u);
     EXPECT_EQ(g.s().settled_units() + body.carried, settled);
     EXPECT_EQ(g.sim.mass().carried, body.carried);
@@ -125,7 +125,7 @@ TEST(Body, SnowballGrowsByExactlyWhatItTookAndDropsItBack) {
     EXPECT_FLOAT_EQ(body.radius, snowball_radius(0.1f, body.carried));
     const std::uint64_t carried = body.carried;
     EXPECT_EQ(g.sim.drop_snowball(b), carried);
-    EXPECT_EQ(g.sim.body(b).carried, 0u);
+    EXPECT_EQ(body_of(g.sim, b).carried, 0u);
     EXPECT_EQ(g.s().settled_units(), settled);
     g.run(10);
 }
@@ -136,9 +136,9 @@ TEST(Body, RemovingASnowballBooksItsSnowAsRemoved) {
     d.on_ground = true;
     d.snowball = true;
     d.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.0f, false};
-    const Entity b = g.sim.add_body(d);
+    const BodyId b = g.sim.add_body(d);
     g.run(60);
-    const std::uint64_t carried = g.sim.world().get<Body>(b).carried;
+    const std::uint64_t carried = body_of(g.sim, b).carried;
     ASSERT_GT(carried, 0u);
     const MassReport before = g.sim.mass();
     g.sim.remove(b);
@@ -153,13 +153,13 @@ TEST(Body, FlakesDoNotEndInsideAMovingBody) {
     Emitter e;
     e.rate = 8000.0f;
     g.sim.add_emitter(e);
-    const Entity b = g.sim.add_body(ball(-1.5f, 1.0f, 0.5f));
+    const BodyId b = g.sim.add_body(ball(-1.5f, 1.0f, 0.5f));
     g.sim.set_body_motion(b, BodyMotion{{{-1.5f, 1.0f, 0.0f}, {1.5f, 1.0f, 0.0f}}, 1.5f, true});
     for (int t = 0; t < 600; ++t) {
         g.sim.tick();
         ASSERT_TRUE(g.sim.mass().balanced());
-        const Body& body = g.sim.body(b);
-        const FlakePool& f = g.sim.flakes();
+        const Body& body = body_of(g.sim, b);
+        const FlakePool& f = flake_pool(g.sim);
         std::uint32_t inside = 0;
         for (std::uint32_t i = 0; i < f.slot_end; ++i) {
             const float dx = f.px[i] - body.position.x, dy = f.py[i] - body.position.y,
@@ -198,12 +198,12 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
         ASSERT_EQ(a.sim.state_hash(), b.sim.state_hash()) << "tick " << t;
     }
     ASSERT_FALSE(a.s().compacted.empty()) << "the walker packed no snow";
-    const auto saved = a.sim.save();
+    const auto saved = save_snapshot(a.sim);
     const std::uint64_t saved_hash = a.sim.state_hash();
     a.sim.run(200);
     const std::uint64_t straight = a.sim.state_hash();
     const std::vector<std::uint32_t> packed = a.s().compacted;
-    a.sim.restore(*saved);
+    restore_snapshot(a.sim, *saved);
     a.sim.run(200);
     EXPECT_EQ(a.sim.state_hash(), straight);
     EXPECT_EQ(a.s().compacted, packed);
@@ -214,7 +214,7 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
             s.compacted[i] = s.compacted[i] > 0 ? s.compacted[i] - 1 : 0;
         }
     }
-    a.sim.restore(changed);
+    restore_snapshot(a.sim, changed);
     EXPECT_NE(a.sim.state_hash(), saved_hash);
 }
 
@@ -302,26 +302,26 @@ TEST(Body, ABodyUnderASnowyRoofLeavesTheRoofsSnowAlone) {
     d.cell = cell;
     d.base_y = 2.2f;
     d.spills = false;
-    const Entity roof = g.sim.add_surface(d);
+    const SurfaceId roof = g.sim.add_surface(d);
     test::snow_every_cell(g.sim, roof, depth_units);
-    const std::vector<std::uint32_t> roof_snow = g.sim.surface(roof).snow;
+    const std::vector<std::uint32_t> roof_snow = snow_surface(g.sim, roof).snow;
     // A 1.7 m walker under it, and a 0.5 m ball whose top is 5 cm under the
     // roof's bare top; both cut the ground's snow, neither the roof's.
     BodyDef walker = trudger(0.0f);
     walker.motion = BodyMotion{{{-1.5f, 0.0f, 0.0f}, {1.5f, 0.0f, 0.0f}}, 1.5f, false};
     g.sim.add_body(walker);
-    const Entity b = g.sim.add_body(ball(-1.5f, 1.9f, 0.25f));
+    const BodyId b = g.sim.add_body(ball(-1.5f, 1.9f, 0.25f));
     g.sim.set_body_velocity(b, {1.5f, 0.0f, 0.5f});
     g.run(120);
-    EXPECT_EQ(g.sim.body(b).position.y, 1.9f);
+    EXPECT_EQ(body_of(g.sim, b).position.y, 1.9f);
     EXPECT_GT(g.sim.counters().carved_units, 0u);
     EXPECT_LT(g.at(0.0f, 0.0f), depth_units / 4) << "the walker's trench under the roof";
-    EXPECT_EQ(g.sim.surface(roof).snow, roof_snow);
+    EXPECT_EQ(snow_surface(g.sim, roof).snow, roof_snow);
     // The same ball 10 cm higher reaches into the roof's snow and cuts it.
     g.sim.move_body(b, {-0.5f, 2.25f, 0.5f});
     g.sim.set_body_velocity(b, {0.0f, 0.0f, 0.0f});
     g.run(2);
-    EXPECT_NE(g.sim.surface(roof).snow, roof_snow);
+    EXPECT_NE(snow_surface(g.sim, roof).snow, roof_snow);
 }
 
 TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
@@ -347,7 +347,7 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
             << bad;
     }
     EXPECT_EQ(g.sim.state_hash(), before);
-    const Entity b = g.sim.add_body(ball(0.0f, 1.0f, 0.2f));
+    const BodyId b = g.sim.add_body(ball(0.0f, 1.0f, 0.2f));
     const std::uint64_t with_body = g.sim.state_hash();
     EXPECT_NE(error_of([&] {
                   g.sim.set_body_motion(b, BodyMotion{{}, 1.0f, true});
@@ -366,7 +366,7 @@ TEST(Body, BadBodiesAndMotionsNameTheFieldAndChangeNothing) {
               }).find("move_body.position"),
               std::string::npos);
     EXPECT_NE(error_of([&] {
-                  g.sim.move_body(g.ground, {0.0f, 0.0f, 0.0f});
+                  g.sim.move_body(id_of<BodyId>(entity_of(g.ground)), {0.0f, 0.0f, 0.0f});
               }).find("not a living body"),
               std::string::npos);
     EXPECT_EQ(g.sim.state_hash(), with_body);

@@ -2,6 +2,7 @@
 // validate() rejects a value just past a bound (and NaN) naming the row's
 // field, the table accepts the bound itself, and messages say which bound
 // was broken.
+#include "render/visual_rules.hpp"
 #include "systems/api/validation.hpp"
 
 #include <gtest/gtest.h>

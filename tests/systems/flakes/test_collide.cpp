@@ -1,6 +1,6 @@
 // collide_system against bounds, spheres, boxes and mesh tops ([WF §4], [SKY]).
 #include "ecs/rng.hpp"
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/random_streams.hpp"
 #include "systems/flakes/flake_stages.hpp"
 #include "systems/geometry/collider_grid.hpp"
@@ -44,12 +44,12 @@ std::uint32_t add_flake(Simulation& sim, glm::vec3 p, glm::vec3 v, std::uint32_t
 }
 
 glm::vec3 pos(const Simulation& sim, std::uint32_t s) {
-    const FlakePool& f = sim.flakes();
+    const FlakePool& f = flake_pool(sim);
     return {f.px[s], f.py[s], f.pz[s]};
 }
 
 glm::vec3 vel(const Simulation& sim, std::uint32_t s) {
-    const FlakePool& f = sim.flakes();
+    const FlakePool& f = flake_pool(sim);
     return {f.vx[s], f.vy[s], f.vz[s]};
 }
 
@@ -62,11 +62,11 @@ TEST(Collide, SphereRemovesFlakesAndCountsTheirMassExactly) {
     add_flake(sim, {0.0f, 4.5f - 300.0f * dt, 0.0f}, {0.0f, -300.0f, 0.0f}, 100);
     const std::uint32_t outside = add_flake(sim, {3.0f, 2.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 5);
     collide_system(InternalAccess::world(sim));
-    const MassLedger& ledger = sim.world().resource<MassLedger>();
+    const MassLedger& ledger = world_of(sim).resource<MassLedger>();
     EXPECT_EQ(ledger.removed_sphere, 120u);
     EXPECT_EQ(ledger.removed(), 120u);
-    EXPECT_EQ(sim.flakes().alive, 1u);
-    EXPECT_TRUE(sim.flakes().is_alive(outside));
+    EXPECT_EQ(flake_pool(sim).alive, 1u);
+    EXPECT_TRUE(flake_pool(sim).is_alive(outside));
     EXPECT_TRUE(sim.mass().balanced());
 }
 
@@ -79,9 +79,9 @@ TEST(Collide, FlakesOutsideTheBoundsAreRemoved) {
     add_flake(sim, {nan, 1.0f, 0.0f}, {}, 8);
     const std::uint32_t inside = add_flake(sim, {9.99f, 11.99f, -9.99f}, {}, 16);
     collide_system(InternalAccess::world(sim));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed_bounds, 17u);
-    EXPECT_EQ(sim.flakes().alive, 1u);
-    EXPECT_TRUE(sim.flakes().is_alive(inside));
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bounds, 17u);
+    EXPECT_EQ(flake_pool(sim).alive, 1u);
+    EXPECT_TRUE(flake_pool(sim).is_alive(inside));
     EXPECT_TRUE(sim.mass().balanced());
 }
 
@@ -95,7 +95,7 @@ TEST(Collide, FlakePushedIntoABoxSideEndsOnTheFaceAndSlidesDown) {
     const glm::vec3 p_in = pos(sim, s);
     ASSERT_GT(p_in.x, box.min.x);
     collide_system(InternalAccess::world(sim));
-    ASSERT_TRUE(sim.flakes().is_alive(s));
+    ASSERT_TRUE(flake_pool(sim).is_alive(s));
     EXPECT_EQ(pos(sim, s).x, box.min.x);
     EXPECT_EQ(pos(sim, s).y, p_in.y); // motion along the face is kept
     EXPECT_EQ(pos(sim, s).z, p_in.z);
@@ -133,16 +133,16 @@ TEST(Collide, FastFlakeCannotTunnelThroughAThinRoof) {
         add_flake(sim, from + v * dt, v, 9);
         const std::uint32_t beside = add_flake(sim, glm::vec3{5.0f, 4.5f, 0.0f} + v * dt, v, 1);
         collide_system(InternalAccess::world(sim));
-        EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 9u); // caught, bare roof
-        EXPECT_TRUE(sim.flakes().is_alive(beside));
+        EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bare, 9u); // caught, bare roof
+        EXPECT_TRUE(flake_pool(sim).is_alive(beside));
     }
     {
         Simulation sim(config(4));
-        const Entity house = sim.add_box(roof);
+        const ColliderId house = sim.add_box(roof);
         sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, roof.max.y), house);
         const std::uint32_t s = add_flake(sim, from + v * dt, v, 9);
         collide_system(InternalAccess::world(sim));
-        ASSERT_TRUE(sim.flakes().is_alive(s));
+        ASSERT_TRUE(flake_pool(sim).is_alive(s));
         // Waits at the entry point on the roof for the deposit system.
         const float t = (from.y - roof.max.y) / (-v.y * dt);
         EXPECT_EQ(pos(sim, s).y, roof.max.y);
@@ -154,14 +154,14 @@ TEST(Collide, FastFlakeCannotTunnelThroughAThinRoof) {
 TEST(Collide, FastFlakeMeetsTheFirstRoofOnItsPath) {
     // The lower roof holds snow and is listed first; the flake must still stop at the upper one.
     Simulation sim(config(4));
-    const Entity lower = sim.add_box({{-1.0f, 3.0f, -1.0f}, {1.0f, 3.1f, 1.0f}});
+    const ColliderId lower = sim.add_box({{-1.0f, 3.0f, -1.0f}, {1.0f, 3.1f, 1.0f}});
     sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 3.1f), lower);
     sim.add_box({{-1.0f, 5.0f, -1.0f}, {1.0f, 5.1f, 1.0f}});
     const glm::vec3 v{0.0f, -300.0f, 0.0f};
     add_flake(sim, glm::vec3{0.0f, 6.5f, 0.0f} + v * dt, v, 3);
     collide_system(InternalAccess::world(sim));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 3u);
-    EXPECT_EQ(sim.flakes().alive, 0u);
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bare, 3u);
+    EXPECT_EQ(flake_pool(sim).alive, 0u);
 }
 
 TEST(Collide, FastFlakeIsCaughtByAWallFarFromWhereItEnds) {
@@ -173,8 +173,8 @@ TEST(Collide, FastFlakeIsCaughtByAWallFarFromWhereItEnds) {
     collide_system(InternalAccess::world(sim));
     // 0.25 m cells: the wall (x = 0) is not among the cells around the end point
     // (x = 1); only the flake's speed gets it looked at.
-    ASSERT_EQ(sim.world().resource<ColliderGrid>().nx, 80u);
-    ASSERT_TRUE(sim.flakes().is_alive(s));
+    ASSERT_EQ(world_of(sim).resource<ColliderGrid>().nx, 80u);
+    ASSERT_TRUE(flake_pool(sim).is_alive(s));
     EXPECT_EQ(pos(sim, s).x, wall.min.x);
     EXPECT_EQ(vel(sim, s).x, 0.0f);
 }
@@ -182,7 +182,7 @@ TEST(Collide, FastFlakeIsCaughtByAWallFarFromWhereItEnds) {
 TEST(Collide, BoxTopWithoutSurfaceRemovesAsBareAndWithSurfaceKeepsFlakeOnTop) {
     Simulation sim(config(8));
     const Aabb box{{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}};
-    const Entity holder = sim.add_box(box);
+    const ColliderId holder = sim.add_box(box);
     // The surface covers only the half x < 0 of the top.
     sim.add_surface(test::rect_surface(-1.0f, -1.0f, 1.0f, 2.0f, 1.0f), holder);
     const Aabb bare_box{{4.0f, 0.0f, -1.0f}, {6.0f, 1.0f, 1.0f}};
@@ -192,11 +192,11 @@ TEST(Collide, BoxTopWithoutSurfaceRemovesAsBareAndWithSurfaceKeepsFlakeOnTop) {
     add_flake(sim, {0.5f, 0.99f, 0.5f}, v, 5);  // holder's top, but no surface there
     add_flake(sim, {5.0f, 0.99f, 0.0f}, v, 11); // a box without surfaces
     collide_system(InternalAccess::world(sim));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 16u);
-    ASSERT_TRUE(sim.flakes().is_alive(on_surface));
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bare, 16u);
+    ASSERT_TRUE(flake_pool(sim).is_alive(on_surface));
     EXPECT_EQ(pos(sim, on_surface), (glm::vec3{-0.5f, 1.0f, 0.5f}));
     EXPECT_EQ(vel(sim, on_surface).y, 0.0f);
-    EXPECT_EQ(sim.flakes().alive, 1u);
+    EXPECT_EQ(flake_pool(sim).alive, 1u);
 }
 
 TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
@@ -206,7 +206,7 @@ TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
     for (const bool holder : {false, true}) {
         for (const float tilt : {0.0f, 0.4f}) { // tilted: looked up along the wind
             Simulation sim(config(8));
-            const Entity roof = sim.add_mesh_collider(quad);
+            const ColliderId roof = sim.add_mesh_collider(quad);
             if (holder) {
                 sim.add_surface(test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 2.0f), roof);
             }
@@ -215,22 +215,22 @@ TEST(Collide, MeshTopIsMetThroughTheOcclusionMapOnlyFromAbove) {
             sim.set_wind(w);
             sim.set_occlusion(OcclusionCamera{128, tilt});
             occlusion_system(InternalAccess::world(sim));
-            ASSERT_EQ(sim.world().resource<OcclusionMap>().shear_x == 0.0f, tilt == 0.0f);
+            ASSERT_EQ(world_of(sim).resource<OcclusionMap>().shear_x == 0.0f, tilt == 0.0f);
             const std::uint32_t from_above =
                 add_flake(sim, {0.2f, 1.99f, 0.3f}, {0.0f, -2.0f, 0.0f}, 4);
             const std::uint32_t sideways =
                 add_flake(sim, {0.0f, 1.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 6);
             collide_system(InternalAccess::world(sim));
-            EXPECT_TRUE(sim.flakes().is_alive(sideways));
+            EXPECT_TRUE(flake_pool(sim).is_alive(sideways));
             EXPECT_EQ(pos(sim, sideways), (glm::vec3{0.0f, 1.5f, 0.0f}));
             if (holder) {
-                ASSERT_TRUE(sim.flakes().is_alive(from_above));
+                ASSERT_TRUE(flake_pool(sim).is_alive(from_above));
                 EXPECT_NEAR(pos(sim, from_above).y, 2.0f, 1e-4f);
                 EXPECT_EQ(vel(sim, from_above).y, 0.0f);
-                EXPECT_EQ(sim.world().resource<MassLedger>().removed(), 0u);
+                EXPECT_EQ(world_of(sim).resource<MassLedger>().removed(), 0u);
             } else {
-                EXPECT_FALSE(sim.flakes().is_alive(from_above));
-                EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 4u);
+                EXPECT_FALSE(flake_pool(sim).is_alive(from_above));
+                EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bare, 4u);
             }
         }
     }
@@ -247,8 +247,8 @@ TEST(Collide, GridIndexesManyBoxesAndRebuildsWhenTheSolidsChange) {
         }
     }
     collide_system(InternalAccess::world(sim));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed_bare, 400u);
-    const auto& grid = sim.world().resource<ColliderGrid>();
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_bare, 400u);
+    const auto& grid = world_of(sim).resource<ColliderGrid>();
     EXPECT_EQ(grid.nx, 80u);
     std::uint32_t most = 0;
     for (std::size_t c = 0; c + 1 < grid.cell_start.size(); ++c) {
@@ -260,16 +260,16 @@ TEST(Collide, GridIndexesManyBoxesAndRebuildsWhenTheSolidsChange) {
     const std::uint32_t s = add_flake(sim, {0.0f, 5.0f, 0.0f}, {}, 1);
     sim.add_sphere({0.0f, 5.0f, 0.0f}, 0.5f); // bumps SourceVersions::solids
     collide_system(InternalAccess::world(sim));
-    EXPECT_NE(sim.world().resource<ColliderGrid>().solids_version, built);
-    EXPECT_FALSE(sim.flakes().is_alive(s));
-    EXPECT_EQ(sim.world().resource<MassLedger>().removed_sphere, 1u);
+    EXPECT_NE(world_of(sim).resource<ColliderGrid>().solids_version, built);
+    EXPECT_FALSE(flake_pool(sim).is_alive(s));
+    EXPECT_EQ(world_of(sim).resource<MassLedger>().removed_sphere, 1u);
 }
 
 /// A scene with every kind of collider and 100k flakes drawn from a fixed seed.
 void fill_scene(Simulation& sim, std::uint32_t flakes) {
     const std::vector<glm::vec3> tent{{2, 1, 2}, {6, 3, 4}, {2, 1, 6},
                                       {6, 3, 4}, {8, 1, 2}, {8, 1, 6}};
-    const Entity mesh = sim.add_mesh_collider(tent);
+    const ColliderId mesh = sim.add_mesh_collider(tent);
     sim.add_surface(test::rect_surface(2.0f, 2.0f, 3.0f, 4.0f, 2.0f), mesh);
     for (std::uint32_t i = 0; i < 40; ++i) {
         const RngKey k{7, 0, i, random_stream::test};
@@ -280,7 +280,7 @@ void fill_scene(Simulation& sim, std::uint32_t flakes) {
             sim.add_sphere(c, h.x);
             continue;
         }
-        const Entity b = sim.add_box({c - h, c + h});
+        const ColliderId b = sim.add_box({c - h, c + h});
         if (i % 3 == 0) {
             sim.add_surface(test::rect_surface(c.x - h.x, c.z - h.z, h.x, 2.0f * h.z, c.y + h.y),
                             b);
@@ -306,11 +306,11 @@ TEST(Collide, OneAndTwoThreadsLeaveIdenticalPoolState) {
     test::share_work_at_any_size(two);
     fill_scene(one, n);
     fill_scene(two, n);
-    const FlakePool before = one.flakes();
+    const FlakePool before = flake_pool(one);
     collide_system(InternalAccess::world(one));
     collide_system(InternalAccess::world(two));
-    const FlakePool& a = one.flakes();
-    const FlakePool& b = two.flakes();
+    const FlakePool& a = flake_pool(one);
+    const FlakePool& b = flake_pool(two);
     EXPECT_EQ(a.px, b.px);
     EXPECT_EQ(a.py, b.py);
     EXPECT_EQ(a.pz, b.pz);
@@ -321,8 +321,8 @@ TEST(Collide, OneAndTwoThreadsLeaveIdenticalPoolState) {
     EXPECT_EQ(a.free_stack, b.free_stack);
     EXPECT_EQ(a.alive, b.alive);
     EXPECT_EQ(one.state_hash(), two.state_hash());
-    const MassLedger& la = one.world().resource<MassLedger>();
-    const MassLedger& lb = two.world().resource<MassLedger>();
+    const MassLedger& la = world_of(one).resource<MassLedger>();
+    const MassLedger& lb = world_of(two).resource<MassLedger>();
     EXPECT_EQ(la.removed_bounds, lb.removed_bounds);
     EXPECT_EQ(la.removed_sphere, lb.removed_sphere);
     EXPECT_EQ(la.removed_bare, lb.removed_bare);

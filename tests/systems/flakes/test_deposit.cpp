@@ -2,7 +2,7 @@
 // [ZCL §IV] at their stated frequencies, surface validation, concentrated
 // landing [WF §4, §6] and thread-count independence.
 #include "ecs/rng.hpp"
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/random_streams.hpp"
 #include "systems/core/units.hpp"
 #include "systems/flakes/flake_stages.hpp"
@@ -104,7 +104,7 @@ TEST(SnowSurfaceDef, BadValuesNameTheField) {
     SurfaceDef bad;
     bad.cell = 0.0f;
     EXPECT_THROW(sim.add_surface(bad), SimulationError);
-    EXPECT_EQ(sim.world().count<SnowSurface>(), 0u);
+    EXPECT_EQ(world_of(sim).count<SnowSurface>(), 0u);
 }
 
 TEST(SnowSurfaceDef, LevelsAndLimitsInUnits) {
@@ -131,52 +131,52 @@ TEST(SnowSurfaceDef, LevelsAndLimitsInUnits) {
 
 TEST(Deposit, FlakeInStillAirLandsInTheCellBelow) {
     Simulation sim(small_config());
-    const Entity g = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f));
+    const SurfaceId g = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f));
     place_flake(sim, {0.23f, 1.0f, -0.41f}, {0.0f, -1.0f, 0.0f}, 40);
     for (int t = 0; t < 200 && sim.counters().landed == 0; ++t) {
         sim.tick();
     }
-    const SnowSurface& s = sim.surface(g);
+    const SnowSurface& s = snow_surface(sim, g);
     EXPECT_EQ(sim.counters().landed, 1u);
     EXPECT_EQ(sim.counters().rolled, 0u); // flat and bare: rule 1, it stays
     EXPECT_EQ(s.snow[s.index(12, 5)], 40u);
     EXPECT_EQ(s.settled_units(), 40u);
-    EXPECT_EQ(sim.flakes().alive, 0u);
+    EXPECT_EQ(flake_pool(sim).alive, 0u);
     EXPECT_TRUE(sim.mass().balanced());
 }
 
 TEST(Deposit, FlakeBelowARoofDoesNotLandOnIt) {
     Simulation sim(small_config());
-    const Entity ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
-    const Entity roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 2.0f));
+    const SurfaceId ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
+    const SurfaceId roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 2.0f));
     // Under the roof, drifting sideways and falling: it must reach the ground.
     place_flake(sim, {-1.5f, 1.5f, 0.0f}, {1.0f, -0.2f, 0.0f}, 7);
     // Just under the roof's bare top, at rest: not on the roof either.
     place_flake(sim, {0.5f, 2.0f - 0.01f, 0.5f}, {0.0f, 0.0f, 0.0f}, 5);
     sim.run(600);
-    EXPECT_EQ(sim.surface(roof).settled_units(), 0u);
-    EXPECT_EQ(sim.surface(ground).settled_units(), 12u);
+    EXPECT_EQ(snow_surface(sim, roof).settled_units(), 0u);
+    EXPECT_EQ(snow_surface(sim, ground).settled_units(), 12u);
     EXPECT_TRUE(sim.mass().balanced());
 }
 
 TEST(Deposit, FastFlakeLandsOnTheHighestSurfaceItCrossed) {
     Simulation sim(small_config());
-    const Entity ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
-    const Entity roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 0.5f));
+    const SurfaceId ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
+    const SurfaceId roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 0.5f));
     // Moved this tick from y = 1 to y = -0.01: it crossed the roof (0.5) and the ground (0).
     place_flake(sim, {0.05f, -0.01f, 0.05f}, {0.0f, -1.01f / sim.config().dt, 0.0f}, 3);
     deposit_system(InternalAccess::world(sim));
-    EXPECT_EQ(sim.surface(roof).settled_units(), 3u);
-    EXPECT_EQ(sim.surface(ground).settled_units(), 0u);
+    EXPECT_EQ(snow_surface(sim, roof).settled_units(), 3u);
+    EXPECT_EQ(snow_surface(sim, ground).settled_units(), 0u);
 }
 
 TEST(Deposit, FlakeInsideTheSnowLayerLands) {
     // The collide system sets flakes that hit a box top onto the bare top with
     // vy = 0; under deep snow that is inside the layer and must count as landed.
     Simulation sim(small_config());
-    const Entity roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 1.0f));
+    const SurfaceId roof = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.1f, 1.0f));
     sim.add_settled_snow(roof, 4, 4, 40000); // 0.2 m of snow
-    const SnowSurface& s = sim.surface(roof);
+    const SnowSurface& s = snow_surface(sim, roof);
     place_flake(sim, {-0.55f, 1.0f, -0.55f}, {0.0f, 0.0f, 0.0f}, 9);
     deposit_system(InternalAccess::world(sim));
     EXPECT_EQ(sim.counters().landed, 1u);
@@ -185,20 +185,20 @@ TEST(Deposit, FlakeInsideTheSnowLayerLands) {
 
 TEST(Deposit, SurfacesAddedOrRemovedMidRunAreSeen) {
     Simulation sim(small_config());
-    const Entity ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
+    const SurfaceId ground = sim.add_surface(flat(-2.0f, -2.0f, 4.0f, 0.1f));
     place_flake(sim, {0.5f, 1.0f, 0.5f}, {0.0f, -1.0f, 0.0f}, 4);
     sim.run(120);
-    ASSERT_EQ(sim.surface(ground).settled_units(), 4u);
+    ASSERT_EQ(snow_surface(sim, ground).settled_units(), 4u);
     // A shelf appears under the next flake: the landing cache must notice.
-    const Entity shelf = sim.add_surface(flat(0.0f, 0.0f, 1.0f, 0.1f, 0.5f));
+    const SurfaceId shelf = sim.add_surface(flat(0.0f, 0.0f, 1.0f, 0.1f, 0.5f));
     place_flake(sim, {0.5f, 1.0f, 0.5f}, {0.0f, -1.0f, 0.0f}, 6);
     sim.run(120);
-    EXPECT_EQ(sim.surface(shelf).settled_units(), 6u);
+    EXPECT_EQ(snow_surface(sim, shelf).settled_units(), 6u);
     // And goes again: its snow leaves the books as removed, flakes reach the ground.
     sim.remove(shelf);
     place_flake(sim, {0.5f, 1.0f, 0.5f}, {0.0f, -1.0f, 0.0f}, 8);
     sim.run(120);
-    EXPECT_EQ(sim.surface(ground).settled_units(), 12u);
+    EXPECT_EQ(snow_surface(sim, ground).settled_units(), 12u);
     EXPECT_EQ(sim.mass().removed, 6u);
     EXPECT_TRUE(sim.mass().balanced());
 }
@@ -208,9 +208,9 @@ TEST(Deposit, SurfacesAddedOrRemovedMidRunAreSeen) {
 std::map<std::size_t, int> roll_counts(const std::array<std::uint32_t, 25>& shape, std::size_t c,
                                        int trials) {
     Simulation sim(small_config(4));
-    const Entity e = sim.add_surface(flat(0.0f, 0.0f, 0.5f, 0.1f));
+    const SurfaceId e = sim.add_surface(flat(0.0f, 0.0f, 0.5f, 0.1f));
     // Reshapes the cells each trial, outside the mass books: deposit alone is under test.
-    SnowSurface& s = InternalAccess::world(sim).get<SnowSurface>(e);
+    SnowSurface& s = InternalAccess::world(sim).get<SnowSurface>(entity_of(e));
     std::map<std::size_t, int> hits;
     for (int t = 0; t < trials; ++t) {
         std::copy(shape.begin(), shape.end(), s.snow.begin());
@@ -311,8 +311,8 @@ TEST(Deposit, LaterLandingsOfATickSeeEarlierOnesSnow) {
     // (the pass finds roll targets by the levels it began with and
     // deposit_end recomputes those a landing of the tick made stale).
     Simulation sim(small_config());
-    const Entity e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
-    const SnowSurface& s = sim.surface(e);
+    const SurfaceId e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
+    const SnowSurface& s = snow_surface(sim, e);
     for (int k = 0; k < 3; ++k) {
         place_flake(sim, centre(s, 20, 20), {0.0f, 0.0f, 0.0f}, 30);
     }
@@ -329,8 +329,8 @@ TEST(Deposit, ConcentratedLandingStaysBounded) {
     // [WF §4, §6]: heavy flakes hitting one spot made the field blow up.
     // 100 000 units on one cell in four ticks, through the whole tick.
     Simulation sim(small_config(256));
-    const Entity e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
-    const SnowSurface& s = sim.surface(e);
+    const SurfaceId e = sim.add_surface(flat(-1.0f, -1.0f, 2.0f, 0.05f));
+    const SnowSurface& s = snow_surface(sim, e);
     const std::size_t c = s.index(20, 20);
     const std::uint64_t total = 100000;
     for (int t = 0; t < 200; ++t) {
@@ -368,7 +368,7 @@ TEST(Deposit, ConcentratedLandingStaysBounded) {
 std::unique_ptr<Simulation> busy(unsigned threads) {
     auto sim = std::make_unique<Simulation>(small_config(3 * 16384, threads));
     sim->add_surface(flat(-4.0f, -4.0f, 8.0f, 0.1f));
-    const Entity box = sim->add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
+    const ColliderId box = sim->add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
     SurfaceDef roof = flat(-1.0f, -1.0f, 2.0f, 0.1f, 1.0f);
     roof.spills = true;
     roof.edge_limit = 0.0005f;

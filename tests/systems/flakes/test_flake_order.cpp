@@ -2,7 +2,7 @@
 // sorted by ground column and packed into the lowest slots; every flake keeps
 // all its data and its id, and the free slots are handed out lowest first.
 #include "ecs/rng.hpp"
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/flakes/flake_order.hpp"
 #include "tests/scenes/sample_scenes.hpp"
@@ -147,13 +147,13 @@ TEST(FlakeOrder, RestoreAcrossAnOrderingTickReplaysExactly) {
     auto b = make_yard(o);
     a->run(50);
     b->run(50);
-    const auto snap = b->save();
+    const auto snap = save_snapshot(*b);
     b->run(40);
-    b->restore(*snap);
+    restore_snapshot(*b, *snap);
     a->run(100);
     b->run(100);
     EXPECT_EQ(a->state_hash(), b->state_hash());
-    EXPECT_GT(a->flakes().alive, 0u);
+    EXPECT_GT(flake_pool(*a).alive, 0u);
 }
 
 } // namespace

@@ -1,7 +1,6 @@
 // The flake pass (integrate, collide and deposit per block of slots) against
 // the three stages run one after another over the whole pool.
-#include "systems/api/internal_access.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/core/mass_ledger.hpp"
 #include "systems/flakes/flake_stages.hpp"
@@ -28,8 +27,8 @@ TEST(FlakePass, SameAsStagesOneAtATime) {
             fused->tick();
             staged->tick();
         }
-        ASSERT_GT(fused->flakes().alive, 1000u) << "the air must hold flakes to compare";
-        const std::uint32_t alive_before = fused->flakes().alive;
+        ASSERT_GT(flake_pool(*fused).alive, 1000u) << "the air must hold flakes to compare";
+        const std::uint32_t alive_before = flake_pool(*fused).alive;
         int shared = 0;
         for (int t = 0; t < 30; ++t) {
             flake_pass_system(InternalAccess::world(*fused));
@@ -40,7 +39,7 @@ TEST(FlakePass, SameAsStagesOneAtATime) {
             deposit_system(w);
             ASSERT_EQ(fused->state_hash(), staged->state_hash()) << "pass " << t;
         }
-        EXPECT_LT(fused->flakes().alive, alive_before) << "flakes landed or left meanwhile";
+        EXPECT_LT(flake_pool(*fused).alive, alive_before) << "flakes landed or left meanwhile";
         EXPECT_GT(shared, 0) << "the shared prefilter must have run";
         EXPECT_TRUE(fused->mass().balanced());
     }
@@ -69,7 +68,7 @@ TEST(FlakePass, AFlakeCollideRemovesDoesNotLand) {
     EXPECT_TRUE(m.balanced());
     EXPECT_EQ(m.removed, 1u);
     EXPECT_EQ(m.settled, 0u);
-    EXPECT_EQ(sim.flakes().alive, 0u);
+    EXPECT_EQ(flake_pool(sim).alive, 0u);
 }
 
 } // namespace

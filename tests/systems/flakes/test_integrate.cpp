@@ -1,4 +1,4 @@
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/flakes/integrator.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ struct OneFlake {
         EXPECT_EQ(sim.place_flake({p, v, c, 0.01f, 1}), 0u);
     }
     [[nodiscard]] glm::vec3 vel() const {
-        const FlakePool& f = sim.flakes();
+        const FlakePool& f = flake_pool(sim);
         return {f.vx[0], f.vy[0], f.vz[0]};
     }
 };
@@ -51,8 +51,8 @@ TEST(Integrate, ExplicitEulerMatchesSeedFormula) {
     OneFlake one(tall_box(Integrator::explicit_euler, 0.1f), 2.0f, {0, 5, 0}, {0, 0, 0});
     one.sim.tick();
     const float v = 0.0f + (-9.81f + 2.0f * (0.0f - 0.0f)) * 0.1f;
-    EXPECT_FLOAT_EQ(one.sim.flakes().vy[0], v);
-    EXPECT_FLOAT_EQ(one.sim.flakes().py[0], 5.0f + v * 0.1f);
+    EXPECT_FLOAT_EQ(flake_pool(one.sim).vy[0], v);
+    EXPECT_FLOAT_EQ(flake_pool(one.sim).py[0], 5.0f + v * 0.1f);
 }
 
 TEST(Integrate, StiffFlakesAreGuardedAndCounted) {
@@ -79,8 +79,8 @@ TEST(Integrate, ExponentialIsExactForConstantWind) {
     one.sim.run(40);
     double p = 0, v = 0;
     integrate::exact_at(p, v, 100.0, 2.0, c, -9.81, 0.0, 40 * dt);
-    EXPECT_NEAR(one.sim.flakes().py[0], p, 1e-4);
-    EXPECT_NEAR(one.sim.flakes().vy[0], v, 1e-5);
+    EXPECT_NEAR(flake_pool(one.sim).py[0], p, 1e-4);
+    EXPECT_NEAR(flake_pool(one.sim).vy[0], v, 1e-5);
 }
 
 TEST(Integrate, Rk4IsFarMoreAccurateThanEuler) {
@@ -92,7 +92,7 @@ TEST(Integrate, Rk4IsFarMoreAccurateThanEuler) {
     for (const Integrator i : {Integrator::explicit_euler, Integrator::rk4}) {
         OneFlake one(tall_box(i, dt), c, {0, 100, 0}, {0, 0, 0});
         one.sim.run(30);
-        err[k++] = std::abs(one.sim.flakes().py[0] - p);
+        err[k++] = std::abs(flake_pool(one.sim).py[0] - p);
     }
     EXPECT_LT(err[1] * 100.0, err[0]);
 }

@@ -1,4 +1,4 @@
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/units.hpp"
 
 #include <gtest/gtest.h>
@@ -25,13 +25,13 @@ TEST(Spawn, RateOnAverageAndPoolLimitHolds) {
     sim.tick(); // spawn runs before integrate: 1 tick of spawning
     sim.run(59);
     // Nothing lands or leaves in one second from 10 m up at <= 1.5 m/s.
-    EXPECT_NEAR(static_cast<double>(sim.flakes().alive), 600.0, 3.0);
+    EXPECT_NEAR(static_cast<double>(flake_pool(sim).alive), 600.0, 3.0);
 
     Simulation small(box_config(50));
     small.add_emitter(e);
     small.run(100);
-    EXPECT_EQ(small.flakes().alive, 50u);
-    EXPECT_EQ(small.flakes().max_alive, 50u);
+    EXPECT_EQ(flake_pool(small).alive, 50u);
+    EXPECT_EQ(flake_pool(small).max_alive, 50u);
     EXPECT_TRUE(small.mass().balanced());
 }
 
@@ -41,7 +41,7 @@ TEST(Spawn, StillAirFlakesComeFromTheTopWithDrawnProperties) {
     e.rate = 60000.0f;
     sim.add_emitter(e);
     sim.tick();
-    const FlakePool& f = sim.flakes();
+    const FlakePool& f = flake_pool(sim);
     ASSERT_GT(f.alive, 500u);
     for (std::uint32_t i = 0; i < f.capacity(); ++i) {
         if (!f.is_alive(i)) {
@@ -68,7 +68,7 @@ TEST(Spawn, WindFeedsTheUpwindSide) {
     e.rate = 60000.0f;
     sim.add_emitter(e);
     sim.tick();
-    const FlakePool& f = sim.flakes();
+    const FlakePool& f = flake_pool(sim);
     std::uint32_t upwind = 0, downwind = 0;
     for (std::uint32_t i = 0; i < f.capacity(); ++i) {
         // Side-born flakes are below the top face; top-born ones drift a little.
@@ -91,7 +91,7 @@ TEST(Wind, RandomWalkStaysBounded) {
     glm::vec3 lo(1e9f), hi(-1e9f);
     for (int t = 0; t < 5000; ++t) {
         sim.tick();
-        const glm::vec3 c = sim.world().resource<Wind>().current;
+        const glm::vec3 c = world_of(sim).resource<Wind>().current;
         const glm::vec3 d = c - w.base;
         ASSERT_LE(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z), 0.75f + 1e-5f);
         lo = glm::min(lo, c);
@@ -111,7 +111,7 @@ TEST(Wind, GustsRiseAboveTheWalk) {
     float peak = 0.0f;
     for (int t = 0; t < 1200; ++t) {
         sim.tick();
-        peak = std::max(peak, sim.world().resource<Wind>().current.x);
+        peak = std::max(peak, world_of(sim).resource<Wind>().current.x);
     }
     EXPECT_GT(peak, 9.0f);
     EXPECT_LE(peak, 12.0f + 1e-4f);
@@ -120,8 +120,8 @@ TEST(Wind, GustsRiseAboveTheWalk) {
 TEST(Wind, NoWindResourceNoWindSystem) {
     Simulation sim(box_config(16));
     sim.run(3);
-    EXPECT_FALSE(sim.schedule().would_run("wind", sim.world()));
-    for (const auto& s : sim.schedule().stats()) {
+    EXPECT_FALSE(schedule_of(sim).would_run("wind", world_of(sim)));
+    for (const auto& s : schedule_of(sim).stats()) {
         if (s.name == "wind" || s.name == "spawn") {
             EXPECT_EQ(s.calls, 0u);
         }
@@ -149,7 +149,7 @@ TEST(SimulationApi, BadInputIsRejectedAndStateUnchanged) {
     SurfaceDef s;
     s.cell = 0.0f;
     EXPECT_THROW(sim.add_surface(s), SimulationError);
-    EXPECT_THROW(sim.remove(null_entity), SimulationError);
+    EXPECT_THROW(sim.remove(BodyId{}), SimulationError);
     EXPECT_EQ(sim.state_hash(), before);
     SimConfig c;
     c.dt = -0.1f;

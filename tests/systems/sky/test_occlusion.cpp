@@ -1,5 +1,5 @@
 // The occlusion ("sky") camera of [SKY]: depth map from above, exposure, tilt, refresh.
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ SurfaceDef ground() {
 }
 
 const OcclusionMap& map_of(const Simulation& sim) {
-    return sim.world().resource<OcclusionMap>();
+    return world_of(sim).resource<OcclusionMap>();
 }
 
 /// Texel under world (x, z) for a map without tilt.
@@ -42,23 +42,23 @@ std::size_t texel(const OcclusionMap& m, float x, float z) {
 /// table mesh inside the house.
 struct House {
     Simulation sim{config()};
-    Entity ground_surface = sim.add_surface(ground());
-    Entity walls = sim.add_box({{-2.0f, 0.0f, -2.0f}, {2.0f, 2.5f, 2.0f}});
-    Entity roof = sim.add_mesh_collider({{-2.5f, 2.5f, -2.5f},
-                                         {0.0f, 3.5f, -2.5f},
-                                         {0.0f, 3.5f, 2.5f},
-                                         {-2.5f, 2.5f, -2.5f},
-                                         {0.0f, 3.5f, 2.5f},
-                                         {-2.5f, 2.5f, 2.5f},
-                                         {2.5f, 2.5f, -2.5f},
-                                         {0.0f, 3.5f, -2.5f},
-                                         {0.0f, 3.5f, 2.5f},
-                                         {2.5f, 2.5f, -2.5f},
-                                         {0.0f, 3.5f, 2.5f},
-                                         {2.5f, 2.5f, 2.5f}});
-    Entity table =
+    SurfaceId ground_surface = sim.add_surface(ground());
+    ColliderId walls = sim.add_box({{-2.0f, 0.0f, -2.0f}, {2.0f, 2.5f, 2.0f}});
+    ColliderId roof = sim.add_mesh_collider({{-2.5f, 2.5f, -2.5f},
+                                             {0.0f, 3.5f, -2.5f},
+                                             {0.0f, 3.5f, 2.5f},
+                                             {-2.5f, 2.5f, -2.5f},
+                                             {0.0f, 3.5f, 2.5f},
+                                             {-2.5f, 2.5f, 2.5f},
+                                             {2.5f, 2.5f, -2.5f},
+                                             {0.0f, 3.5f, -2.5f},
+                                             {0.0f, 3.5f, 2.5f},
+                                             {2.5f, 2.5f, -2.5f},
+                                             {0.0f, 3.5f, 2.5f},
+                                             {2.5f, 2.5f, 2.5f}});
+    ColliderId table =
         sim.add_mesh_collider({{-1.0f, 0.8f, -1.0f}, {1.0f, 0.8f, -1.0f}, {1.0f, 0.8f, 1.0f}});
-    Entity ball = sim.add_sphere({6.0f, 1.0f, 6.0f}, 1.0f);
+    ColliderId ball = sim.add_sphere({6.0f, 1.0f, 6.0f}, 1.0f);
 
     explicit House(float tilt = 0.0f) {
         sim.set_occlusion(OcclusionCamera{160, tilt});
@@ -98,7 +98,7 @@ TEST(Occlusion, UnderTheRoofIsNotExposedOnTheRoofIs) {
 
     // Per cell of the ground: exactly the roof's 5 × 5 m footprint is in its shadow.
     std::vector<float> exposure;
-    const SnowSurface& g = h.sim.surface(h.ground_surface);
+    const SnowSurface& g = snow_surface(h.sim, h.ground_surface);
     surface_exposure(m, g, exposure);
     ASSERT_EQ(exposure.size(), g.cell_count());
     std::size_t shaded_under_roof = 0, shaded_elsewhere = 0;
@@ -128,7 +128,7 @@ TEST(Occlusion, RefreshesOnceThenOnlyWhenGeometryChanges) {
     }
     EXPECT_EQ(refreshes(), 1u);
     EXPECT_EQ(map_of(h.sim).version, 1u);
-    const Entity shed = h.sim.add_box({{-8.0f, 0.0f, -8.0f}, {-6.0f, 1.0f, -6.0f}});
+    const ColliderId shed = h.sim.add_box({{-8.0f, 0.0f, -8.0f}, {-6.0f, 1.0f, -6.0f}});
     occlusion_system(InternalAccess::world(h.sim));
     occlusion_system(InternalAccess::world(h.sim));
     EXPECT_EQ(refreshes(), 2u);
@@ -146,7 +146,7 @@ TEST(Occlusion, TiltShadowsTheLeeSideAndFollowsTheWind) {
     sim.set_occlusion(OcclusionCamera{160, 0.0f});
     occlusion_system(InternalAccess::world(sim));
     const auto exposed = [&](float x, float z) {
-        return occlusion_exposure(sim.world().resource<OcclusionMap>(), x, 0.0f, z);
+        return occlusion_exposure(world_of(sim).resource<OcclusionMap>(), x, 0.0f, z);
     };
     EXPECT_EQ(exposed(1.5f, 0.0f), 1.0f); // straight down: both sides open
     EXPECT_EQ(exposed(-1.5f, 0.0f), 1.0f);

@@ -1,7 +1,7 @@
 // cover: snow on whatever geometry lies under it (spheres, meshes, boxes),
 // with drops that spill, slopes steeper than repose that shed, geometry
 // changes that release snow as flakes, and the ledger exact every tick.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/snowpack/snow_cover.hpp"
 
 #include <gtest/gtest.h>
@@ -36,8 +36,8 @@ CoverDef cover_over(float half, float cell) {
 }
 
 /// Depth (m) of the cover's cell under world (x, z).
-float depth_at(const Simulation& sim, Entity cover, float x, float z) {
-    const SnowSurface& s = sim.surface(cover);
+float depth_at(const Simulation& sim, CoverId cover, float x, float z) {
+    const SnowSurface& s = snow_surface(sim, cover);
     std::uint32_t ix = 0, iz = 0;
     if (!s.cell_at(x, z, ix, iz)) {
         return -1.0f;
@@ -46,8 +46,8 @@ float depth_at(const Simulation& sim, Entity cover, float x, float z) {
 }
 
 /// Base height (m) of the cover's cell under (x, z); -inf for void.
-float base_at(const Simulation& sim, Entity cover, float x, float z) {
-    const SnowSurface& s = sim.surface(cover);
+float base_at(const Simulation& sim, CoverId cover, float x, float z) {
+    const SnowSurface& s = snow_surface(sim, cover);
     std::uint32_t ix = 0, iz = 0;
     if (!s.cell_at(x, z, ix, iz) || s.is_void(s.index(ix, iz))) {
         return -INFINITY;
@@ -73,7 +73,7 @@ TEST(SnowCover, BaseFollowsTheHighestGeometryOfEachColumn) {
     sim.add_mesh_collider(ground_plane(3.0f, 0.0f));
     sim.add_sphere({0.0f, 1.0f, 0.0f}, 0.5f);
     sim.add_box({{1.0f, 0.0f, 1.0f}, {2.0f, 0.8f, 2.0f}});
-    const Entity cover = sim.add_cover(cover_over(2.5f, 0.05f));
+    const CoverId cover = sim.add_cover(cover_over(2.5f, 0.05f));
     sim.tick();
     EXPECT_NEAR(base_at(sim, cover, 0.01f, 0.01f), 1.5f, 0.01f);  // sphere top
     EXPECT_NEAR(base_at(sim, cover, 1.5f, 1.5f), 0.8f, 1e-3f);    // box top
@@ -88,7 +88,7 @@ TEST(SnowCover, SnowLiesOnASphereABoxAndTheGround) {
     sim.add_sphere({0.0f, 1.0f, 0.0f}, 0.5f);
     sim.add_box({{1.0f, 0.0f, 1.0f}, {2.0f, 0.8f, 2.0f}});
     sim.add_emitter(heavy_snow());
-    const Entity cover = sim.add_cover(cover_over(2.5f, 0.05f));
+    const CoverId cover = sim.add_cover(cover_over(2.5f, 0.05f));
     run_balanced(sim, 1800);
     EXPECT_GT(depth_at(sim, cover, 0.0f, 0.0f), 0.0f) << "sphere top";
     EXPECT_GT(depth_at(sim, cover, 1.5f, 1.5f), 0.0f) << "box top";
@@ -102,12 +102,12 @@ TEST(SnowCover, ExcessAtABoxEdgeSpillsOntoTheGround) {
     sim.add_box({{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}});
     CoverDef d = cover_over(2.0f, 0.05f);
     d.edge_limit = 0.002f;
-    const Entity cover = sim.add_cover(d);
+    const CoverId cover = sim.add_cover(d);
     sim.add_emitter(heavy_snow());
     run_balanced(sim, 1800);
     EXPECT_GT(sim.counters().spilled_units, 0u);
     // The box top holds at most about its edge limit at its rim.
-    const SnowSurface& s = sim.surface(cover);
+    const SnowSurface& s = snow_surface(sim, cover);
     std::uint32_t ix = 0, iz = 0;
     ASSERT_TRUE(s.cell_at(0.49f, 0.0f, ix, iz));
     EXPECT_LE(s.snow[s.index(ix, iz)], s.edge_limit_units);
@@ -126,7 +126,7 @@ TEST(SnowCover, SnowSlidesOffASteepRoofAndCollectsAtItsFoot) {
                            {0.0f, 0.0f, 1.0f}});
     CoverDef d = cover_over(2.0f, 0.05f);
     d.drop_limit = 0.2f; // 60° over 5 cm is 8.7 cm: a slope, not a drop
-    const Entity cover = sim.add_cover(d);
+    const CoverId cover = sim.add_cover(d);
     sim.add_emitter(heavy_snow());
     run_balanced(sim, 1800);
     // Mid-slope stays nearly bare, the foot collects what slid.
@@ -142,9 +142,9 @@ TEST(SnowCover, RemovedGeometryReleasesItsSnowAsFlakes) {
     c.max_flakes = 60000; // room for the released snow in the same tick
     Simulation sim(c);
     sim.add_mesh_collider(ground_plane(3.0f, 0.0f));
-    const Entity box = sim.add_box({{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}});
-    const Entity cover = sim.add_cover(cover_over(3.0f, 0.05f)); // the whole ground
-    const Entity emitter = sim.add_emitter(heavy_snow());
+    const ColliderId box = sim.add_box({{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}});
+    const CoverId cover = sim.add_cover(cover_over(3.0f, 0.05f)); // the whole ground
+    const EmitterId emitter = sim.add_emitter(heavy_snow());
     run_balanced(sim, 600);
     const float on_box = depth_at(sim, cover, 0.0f, 0.0f);
     ASSERT_GT(on_box, 0.0f);
@@ -168,7 +168,7 @@ TEST(SnowCover, FastFlakesDoNotTunnelThroughAThinRoof) {
     c.gravity = {0.0f, -200.0f * 60.0f, 0.0f}; // 200 m/s after the first tick
     Simulation sim(c);
     sim.add_box({{-1.0f, 1.0f, -1.0f}, {1.0f, 1.001f, 1.0f}}); // a 1 mm roof
-    const Entity cover = sim.add_cover(cover_over(2.0f, 0.05f));
+    const CoverId cover = sim.add_cover(cover_over(2.0f, 0.05f));
     Emitter e = heavy_snow();
     sim.add_emitter(e);
     for (int t = 0; t < 300; ++t) {
@@ -176,7 +176,7 @@ TEST(SnowCover, FastFlakesDoNotTunnelThroughAThinRoof) {
         ASSERT_TRUE(sim.mass().balanced());
     }
     EXPECT_GT(depth_at(sim, cover, 0.0f, 0.0f), 0.0f);
-    EXPECT_GT(sim.surface(cover).settled_units(), 0u);
+    EXPECT_GT(snow_surface(sim, cover).settled_units(), 0u);
 }
 
 TEST(SnowCover, OneAndTwoThreadsGiveTheSameState) {
@@ -199,14 +199,14 @@ TEST(SnowCover, RestoreFromBeforeTheFirstBuildReplaysExactly) {
     sim.add_mesh_collider(ground_plane(3.0f, 0.0f));
     sim.add_sphere({0.0f, 1.0f, 0.0f}, 0.5f);
     sim.add_emitter(heavy_snow());
-    const Entity cover = sim.add_cover(cover_over(2.5f, 0.05f));
-    const auto start = sim.save(); // the cover's base is not built yet
+    const CoverId cover = sim.add_cover(cover_over(2.5f, 0.05f));
+    const auto start = save_snapshot(sim); // the cover's base is not built yet
     sim.run(600);
     const std::uint64_t straight = sim.state_hash();
-    sim.restore(*start);
+    restore_snapshot(sim, *start);
     sim.run(600);
     EXPECT_EQ(sim.state_hash(), straight);
-    EXPECT_GT(sim.surface(cover).settled_units(), 0u) << "the cover was built again";
+    EXPECT_GT(snow_surface(sim, cover).settled_units(), 0u) << "the cover was built again";
 }
 
 TEST(SnowCover, DeclaredSurfacesKeepTheirColumns) {
@@ -216,14 +216,14 @@ TEST(SnowCover, DeclaredSurfacesKeepTheirColumns) {
     ground.size_x = ground.size_z = 4.0f;
     ground.cell = 0.1f;
     ground.spills = false;
-    const Entity g = sim.add_surface(ground);
+    const SurfaceId g = sim.add_surface(ground);
     sim.add_sphere({0.0f, 1.0f, 0.0f}, 0.5f);
-    const Entity cover = sim.add_cover(cover_over(2.0f, 0.05f));
+    const CoverId cover = sim.add_cover(cover_over(2.0f, 0.05f));
     sim.add_emitter(heavy_snow());
     run_balanced(sim, 900);
     EXPECT_EQ(base_at(sim, cover, -1.5f, -1.5f), -INFINITY) << "the ground rectangle's column";
     EXPECT_GT(depth_at(sim, cover, 0.0f, 0.0f), 0.0f) << "the sphere above it is the cover's";
-    EXPECT_GT(sim.surface(g).settled_units(), 0u);
+    EXPECT_GT(snow_surface(sim, g).settled_units(), 0u);
 }
 
 TEST(SnowCover, BadDefinitionsNameTheField) {
@@ -247,7 +247,7 @@ TEST(SnowCover, BadDefinitionsNameTheField) {
     d = cover_over(1.0f, 0.1f);
     d.cell = 0.0f;
     EXPECT_NE(error_of(d).find("cover.cell"), std::string::npos);
-    EXPECT_EQ(sim.world().find_pool<SnowCover>(), nullptr) << "nothing was added";
+    EXPECT_EQ(world_of(sim).find_pool<SnowCover>(), nullptr) << "nothing was added";
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // [WF §4]: flakes that run into a box are moved to its nearest outside
 // point and slide down, which builds a drift at the base of the windward side.
+#include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 
 #include <gtest/gtest.h>
@@ -8,8 +9,8 @@ namespace snow {
 namespace {
 
 /// Settled units on the ground in the strip x0 <= x < x1, |z| < 1.5 (the garage's depth).
-std::uint64_t strip_units(const Simulation& sim, Entity ground, float x0, float x1) {
-    const auto& s = sim.world().get<SnowSurface>(ground);
+std::uint64_t strip_units(const Simulation& sim, SurfaceId ground, float x0, float x1) {
+    const auto& s = snow_surface(sim, ground);
     std::uint64_t sum = 0;
     for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
         for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
@@ -28,14 +29,14 @@ TEST(Drift, WindwardBaseOfABoxGetsMoreSnowThanTheLeeSide) {
     o.emitter_rate = 8000.0f;
     o.max_flakes = 60000;
     auto sim = make_yard(o); // garage x in [-1, 2], wind +2 m/s along +x
-    Wind steady = sim->world().resource<Wind>();
+    Wind steady = world_of(*sim).resource<Wind>();
     steady.walk = 0.0f; // steady wind
     sim->set_wind(steady);
-    Entity ground;
-    sim->world().each<SnowSurface, SurfaceOf>(
+    SurfaceId ground;
+    world_of(*sim).each<SnowSurface, SurfaceOf>(
         [&](Entity e, const SnowSurface&, const SurfaceOf& of) {
             if (of.owner.is_null()) {
-                ground = e;
+                ground = id_of<SurfaceId>(e);
             }
         });
     sim->run(3000);

@@ -1,8 +1,7 @@
 // redistribute: the Laplacian cap of [WF §3] must smooth any pile with no
 // negative cell, exact mass, no new maximum (a mass check alone misses a
 // blow-up: docs/design.md "Numerical stability") and no sweep-direction bias.
-#include "systems/api/internal_access.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/settle.hpp"
 
 #include <gtest/gtest.h>
@@ -17,9 +16,9 @@ namespace {
 
 struct Field {
     Simulation sim;
-    Entity e;
+    SurfaceId e;
     explicit Field(const SurfaceDef& def) : sim(SimConfig{}), e(sim.add_surface(def)) {}
-    [[nodiscard]] const SnowSurface& s() const { return sim.surface(e); }
+    [[nodiscard]] const SnowSurface& s() const { return snow_surface(sim, e); }
     void put(std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
         sim.add_settled_snow(e, ix, iz, units);
     }
@@ -182,7 +181,8 @@ TEST(Redistribute, LevelBaseShortcutMovesTheSameSnow) {
         d.base_y = 0.75f;
         Field level(d), general(d);
         ASSERT_TRUE(level.s().uniform_base);
-        InternalAccess::world(general.sim).get<SnowSurface>(general.e).uniform_base = false;
+        InternalAccess::world(general.sim).get<SnowSurface>(entity_of(general.e)).uniform_base =
+            false;
         for (std::uint32_t n = 0; n < 48 * 48; n += step) {
             const std::uint32_t units = 4000 + 997 * (n % 7);
             level.put(n % 48, n / 48, units);
@@ -202,7 +202,7 @@ TEST(Redistribute, LevelBaseShortcutMovesTheSameSnow) {
 TEST(Redistribute, OnlyTheDirtyRegionIsTouched) {
     Field f(square(40));
     // Snow that is not marked dirty (no facade call leaves it so): left alone.
-    SnowSurface& raw = InternalAccess::world(f.sim).get<SnowSurface>(f.e);
+    SnowSurface& raw = InternalAccess::world(f.sim).get<SnowSurface>(entity_of(f.e));
     raw.snow[raw.index(5, 5)] = 9000;
     f.put(30, 30, 9000);
     f.settle(100);

@@ -1,7 +1,7 @@
 // slide: a line of a tilted surface down its slope that holds more than the
 // slide depth on average sheds all its snow over its low edge as one slab
 // (docs/cover_and_bodies.md "Spill and slides"); mass moves exactly.
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/rect_surface.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ namespace {
 /// ground under everything.
 struct SlidingRoof {
     Simulation sim;
-    Entity ground, roof, porch;
+    SurfaceId ground, roof, porch;
     explicit SlidingRoof(Wind wind = no_wind())
         : sim([] {
               SimConfig c;
@@ -26,7 +26,7 @@ struct SlidingRoof {
           }()) {
         sim.set_wind(wind);
         ground = sim.add_surface(test::rect_surface(-3.0f, -3.0f, 6.0f, 6.0f, 0.0f, false));
-        const Entity box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}});
+        const ColliderId box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}});
         SurfaceDef r = test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 2.5f, true);
         r.slope_x = -0.5f;
         r.edge_limit = 0.1f; // high: only slides leave this roof
@@ -40,7 +40,7 @@ struct SlidingRoof {
         w.walk = 0.0f;
         return w;
     }
-    [[nodiscard]] const SnowSurface& s(Entity e) const { return sim.surface(e); }
+    [[nodiscard]] const SnowSurface& s(SurfaceId e) const { return snow_surface(sim, e); }
     /// Units giving the roof's line iz a mean depth of `depth` m, spread evenly.
     void fill_line(std::uint32_t iz, float depth) {
         const SnowSurface& r = s(roof);
@@ -68,7 +68,7 @@ TEST(Slide, ALineOverTheSlideDepthShedsWholeOntoWhatLiesBelowItsEave) {
         y.sim.tick();
         ASSERT_TRUE(y.sim.mass().balanced()) << "tick " << t;
     }
-    EXPECT_EQ(y.sim.flakes().alive, 0u) << "the slab has landed";
+    EXPECT_EQ(flake_pool(y.sim).alive, 0u) << "the slab has landed";
     EXPECT_EQ(y.sim.counters().spilled_units, slab);
     EXPECT_EQ(y.s(y.porch).settled_units(), slab) << "all of it on the porch below the eave";
     EXPECT_EQ(y.s(y.ground).settled_units(), 0u);
@@ -96,7 +96,7 @@ TEST(Slide, TheWindHardlyCarriesTheSlabOffThePorch) {
     const std::uint64_t slab = y.line_units(5);
     y.sim.run(300);
     ASSERT_TRUE(y.sim.mass().balanced());
-    EXPECT_EQ(y.sim.flakes().alive, 0u);
+    EXPECT_EQ(flake_pool(y.sim).alive, 0u);
     EXPECT_EQ(y.s(y.porch).settled_units(), slab);
 }
 
@@ -106,10 +106,10 @@ TEST(Slide, SaveAndRestoreAcrossASlideGiveTheSameState) {
         y->fill_line(3, 0.03f);
         y->sim.run(2); // mid-fall
     }
-    const auto snap = b.sim.save();
+    const auto snap = save_snapshot(b.sim);
     a.sim.run(40);
     b.sim.run(17);
-    b.sim.restore(*snap);
+    restore_snapshot(b.sim, *snap);
     b.sim.run(40);
     EXPECT_EQ(a.sim.state_hash(), b.sim.state_hash());
 }

@@ -2,7 +2,7 @@
 // surface per tick (a knob of the accuracy study, docs/accuracy.md). A pile
 // still moving at the cap goes on next tick: the cap changes when snow
 // settles, never where it ends up or how much there is.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/support/settle.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ namespace {
 
 struct Pile {
     Simulation sim;
-    Entity e;
+    SurfaceId e;
     explicit Pile(std::uint32_t cap) : sim(config(cap)), e(sim.add_surface(square())) {
         sim.add_settled_snow(e, 16, 16, 2'000'000); // far over the Laplacian cap: many steps
     }
@@ -31,7 +31,7 @@ struct Pile {
         d.spills = false;
         return d;
     }
-    [[nodiscard]] const SnowSurface& surface() const { return sim.surface(e); }
+    [[nodiscard]] const SnowSurface& surface() const { return snow_surface(sim, e); }
     int settle(int max_calls) { return test::settle_surface(sim, e, max_calls); }
 };
 

@@ -1,6 +1,6 @@
 // spill: [WF §3], snow over an edge limit is emitted into the scene and
 // falls onto the surfaces below; mass moves from settled to airborne exactly.
-#include "systems/api/internal_access.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/units.hpp"
 #include "tests/support/rect_surface.hpp"
 
@@ -22,7 +22,7 @@ SurfaceDef rect(float x0, float z0, float sx, float sz, float y, bool spills) {
 /// its -x side, and the ground.
 struct House {
     Simulation sim;
-    Entity ground, roof, porch;
+    SurfaceId ground, roof, porch;
     House(bool roof_spills, std::uint32_t max_flakes = 512)
         : sim([&] {
               SimConfig c;
@@ -31,13 +31,13 @@ struct House {
               return c;
           }()) {
         ground = sim.add_surface(rect(-3.0f, -3.0f, 6.0f, 6.0f, 0.0f, false));
-        const Entity box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
+        const ColliderId box = sim.add_box({{-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
         roof = sim.add_surface(rect(-1.0f, -1.0f, 2.0f, 2.0f, 1.0f, roof_spills), box);
         porch = sim.add_surface(rect(-2.0f, -1.0f, 1.0f, 2.0f, 0.5f, false));
     }
-    [[nodiscard]] const SnowSurface& s(Entity e) const { return sim.surface(e); }
+    [[nodiscard]] const SnowSurface& s(SurfaceId e) const { return snow_surface(sim, e); }
     /// Settled snow put on a roof cell.
-    void load(Entity e, std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
+    void load(SurfaceId e, std::uint32_t ix, std::uint32_t iz, std::uint32_t units) {
         sim.add_settled_snow(e, ix, iz, units);
     }
 };
@@ -51,7 +51,7 @@ TEST(Spill, EdgeExcessFallsOntoTheSurfaceBelow) {
     }
     const std::uint64_t spilled = h.sim.counters().spilled_units;
     EXPECT_GT(spilled, 0u);
-    EXPECT_EQ(h.sim.flakes().alive, 0u); // everything that fell has landed
+    EXPECT_EQ(flake_pool(h.sim).alive, 0u); // everything that fell has landed
     EXPECT_EQ(h.s(h.porch).settled_units(), spilled);
     EXPECT_EQ(h.s(h.ground).settled_units(), 0u);
     EXPECT_EQ(h.s(h.roof).settled_units() + spilled, 60000u);
@@ -71,7 +71,7 @@ TEST(Spill, NonSpillingSurfaceKeepsItsEdgeSnow) {
     h.load(h.roof, 0, 10, 60000);
     h.sim.run(300);
     EXPECT_EQ(h.sim.counters().spilled_units, 0u);
-    EXPECT_EQ(h.sim.flakes().alive, 0u);
+    EXPECT_EQ(flake_pool(h.sim).alive, 0u);
     EXPECT_EQ(h.s(h.roof).settled_units(), 60000u);
     EXPECT_GT(h.s(h.roof).snow[h.s(h.roof).index(0, 10)], h.s(h.roof).edge_limit_units);
     EXPECT_TRUE(h.sim.mass().balanced());
@@ -88,7 +88,7 @@ TEST(Spill, FlakesAppearHalfACellOutsideAtTheSnowTop) {
     h.load(h.roof, r.nx - 1, 0, 2000 + 2500); // a corner: it sheds diagonally outward
     const float top = r.top_y(r.index(r.nx - 1, 0));
     spill_system(InternalAccess::world(h.sim));
-    const FlakePool& f = h.sim.flakes();
+    const FlakePool& f = flake_pool(h.sim);
     ASSERT_EQ(f.alive, 3u); // 2500 units: 1000 + 1000 + 500
     std::uint32_t units = 0;
     for (std::uint32_t i = 0; i < 3; ++i) {
@@ -111,7 +111,7 @@ TEST(Spill, FullPoolLeavesTheSnowOnTheEdge) {
     const SnowSurface& r = h.s(h.roof);
     h.load(h.roof, 5, 0, 2000 + 5000);
     spill_system(InternalAccess::world(h.sim));
-    EXPECT_EQ(h.sim.flakes().alive, 2u);
+    EXPECT_EQ(flake_pool(h.sim).alive, 2u);
     EXPECT_EQ(h.sim.counters().spilled_units, 2000u);
     EXPECT_EQ(r.snow[r.index(5, 0)], 5000u);
     EXPECT_TRUE(h.sim.mass().balanced());

@@ -2,8 +2,7 @@
 // sheltering the lee of a box as surface-mounted cube experiments report
 // (Martinuzzi & Tropea 1993: reattachment about 1.6 h behind the cube),
 // felt by flakes, deterministic across threads and restore.
-#include "systems/api/internal_access.hpp"
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/flakes/held_wind.hpp"
 #include "systems/wind/wind_field_solver.hpp"
@@ -36,7 +35,7 @@ std::unique_ptr<Simulation> cube_in_wind(bool with_box, std::uint32_t update_eve
 }
 
 const WindField& field(const Simulation& sim) {
-    return sim.world().resource<WindField>();
+    return world_of(sim).resource<WindField>();
 }
 
 /// The developed flow around the cube (20 s: the air has crossed the box
@@ -82,10 +81,10 @@ const CubeWake& cube_wake() {
 
 TEST(WindField, UndeclaredAddsNoWorkAndNoState) {
     auto plain = make_yard();
-    EXPECT_FALSE(plain->schedule().would_run("wind_field", plain->world()));
+    EXPECT_FALSE(schedule_of(*plain).would_run("wind_field", world_of(*plain)));
     auto declared = make_yard();
     declared->set_wind_field(WindFieldDef{});
-    EXPECT_TRUE(declared->schedule().would_run("wind_field", declared->world()));
+    EXPECT_TRUE(schedule_of(*declared).would_run("wind_field", world_of(*declared)));
     EXPECT_NE(plain->state_hash(), declared->state_hash());
     declared->clear_wind_field();
     EXPECT_EQ(plain->state_hash(), declared->state_hash());
@@ -100,7 +99,7 @@ TEST(WindField, BadDefinitionsNameTheFieldAndChangeNothing) {
         } catch (const SimulationError& e) {
             EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
         }
-        EXPECT_FALSE(sim.world().has_resource<WindField>());
+        EXPECT_FALSE(world_of(sim).has_resource<WindField>());
     };
     WindFieldDef d;
     d.cells_y = 0;
@@ -131,7 +130,7 @@ std::unique_ptr<Simulation> yard_in_field(unsigned threads, WindFieldDef def = {
     o.emitter_rate = 6000.0f;
     auto sim = make_yard(o);
     test::share_work_at_any_size(*sim);
-    Wind gusty = sim->world().resource<Wind>();
+    Wind gusty = world_of(*sim).resource<Wind>();
     gusty.gust_strength = 2.0f;
     gusty.gust_rate = 0.5f;
     sim->set_wind(gusty);
@@ -237,7 +236,7 @@ TEST(WindField, FlakesSampleTheFieldEverySampleEveryTicksAndHoldItBetween) {
         def.sample_every = every;
         auto sim = yard_in_field(1, def);
         sim->run(10); // the first step and the first samples
-        const FlakePool& f = sim->world().resource<FlakePool>();
+        const FlakePool& f = world_of(*sim).resource<FlakePool>();
         ASSERT_TRUE(f.holds_wind());
         // Per slot over the window: ticks it held a fresh sample, ticks its
         // held wind changed, whether its flake lived through the window.
@@ -247,7 +246,7 @@ TEST(WindField, FlakesSampleTheFieldEverySampleEveryTicksAndHoldItBetween) {
         for (std::uint32_t t = 0; t < ticks; ++t) {
             const std::vector<SlotBefore> before = slots_before(f);
             sim->run(1);
-            const WindField& field = sim->world().resource<WindField>();
+            const WindField& field = world_of(*sim).resource<WindField>();
             for (std::uint32_t s = 0; s < f.capacity(); ++s) {
                 if (s >= before.size() || !before[s].alive || !f.is_alive(s) ||
                     f.id[s] != before[s].id) {
@@ -287,20 +286,20 @@ TEST(WindField, FlakesSampleTheFieldEverySampleEveryTicksAndHoldItBetween) {
 TEST(WindField, SaveRestoreReplaysExactly) {
     auto sim = yard_in_field(1);
     sim->run(101); // mid-way between two field steps
-    const auto snap = sim->save();
+    const auto snap = save_snapshot(*sim);
     sim->run(150);
     const std::uint64_t first = sim->state_hash();
-    sim->restore(*snap);
+    restore_snapshot(*sim, *snap);
     sim->run(150);
     EXPECT_EQ(sim->state_hash(), first);
     // A snapshot from before the field was declared takes it away again.
     auto plain = make_yard();
-    const auto before = plain->save();
+    const auto before = save_snapshot(*plain);
     const std::uint64_t plain_hash = plain->state_hash();
     plain->set_wind_field(WindFieldDef{});
     plain->run(5);
-    plain->restore(*before);
-    EXPECT_FALSE(plain->world().has_resource<WindField>());
+    restore_snapshot(*plain, *before);
+    EXPECT_FALSE(world_of(*plain).has_resource<WindField>());
     EXPECT_EQ(plain->state_hash(), plain_hash);
 }
 
@@ -365,7 +364,7 @@ TEST(WindField, ProjectionLeavesTheAirNearlyIncompressible) {
     double worst = 0.0;
     for (int t = 0; t < 6; ++t) {
         sim->run(100);
-        const auto& s = sim->world().resource<WindFieldSolver>();
+        const auto& s = world_of(*sim).resource<WindFieldSolver>();
         worst = std::max(worst, wind_field_divergence(f, s) * edge / free_stream);
     }
     EXPECT_LT(worst, 0.02); // measured 0.0094 with the default 8 sweeps

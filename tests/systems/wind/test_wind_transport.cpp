@@ -2,7 +2,7 @@
 // its cell downwind, below it stays; units only move (the ledger is exact
 // every tick); a roof in a gale loses its snow over the lee edge as flakes;
 // deterministic across threads and restore; bad settings are refused.
-#include "systems/api/simulation.hpp"
+#include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 #include "tests/support/even_snow.hpp"
 #include "tests/support/snapshot_check.hpp"
@@ -36,15 +36,15 @@ std::unique_ptr<Simulation> snowy_patch(float speed, bool raised, unsigned threa
     patch.size_z = 2.0f;
     patch.cell = 0.1f;
     patch.edge_limit = 1.0f; // nothing spills by the edge rule: only the wind moves snow
-    Entity owner = null_entity;
+    ColliderId owner;
     if (raised) {
         owner = sim->add_box({{-2.0f, 0.0f, -1.0f}, {2.0f, 1.0f, 1.0f}});
         patch.base_y = 1.0f;
     } else {
         patch.spills = false;
     }
-    const Entity s = sim->add_surface(patch, owner);
-    const SnowSurface& surface = sim->surface(s);
+    const SurfaceId s = sim->add_surface(patch, owner);
+    const SnowSurface& surface = snow_surface(*sim, s);
     const auto units = static_cast<std::uint32_t>(std::lround(snow_depth / surface.unit_height));
     test::snow_every_cell(*sim, s, units);
     return sim;
@@ -59,7 +59,7 @@ WindTransportDef drifting() {
 
 const SnowSurface& patch_of(const Simulation& sim) {
     const SnowSurface* s = nullptr;
-    sim.world().each<SnowSurface>([&](Entity, const SnowSurface& surface) { s = &surface; });
+    world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& surface) { s = &surface; });
     return *s;
 }
 
@@ -159,9 +159,9 @@ TEST(WindTransport, SettingsAreHashedAndKeptWhenTheFieldIsReplaced) {
     finer.cells_y = 8;
     finer.cells_z = 16;
     a->set_wind_field(finer);
-    ASSERT_TRUE(a->world().resource<WindField>().transport.has_value());
+    ASSERT_TRUE(world_of(*a).resource<WindField>().transport.has_value());
     a->clear_wind_transport();
-    EXPECT_FALSE(a->world().resource<WindField>().transport.has_value());
+    EXPECT_FALSE(world_of(*a).resource<WindField>().transport.has_value());
 }
 
 TEST(WindTransport, BadSettingsNameTheFieldAndChangeNothing) {
