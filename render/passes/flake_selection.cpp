@@ -27,8 +27,8 @@ namespace snow {
 namespace {
 
 /// Slots per block: the block's slots and marks stay in L1 between the two
-/// loops. 1024 was a fifth slower at 1M flakes (its four 4 KB runs of arrays
-/// with the same alignment compete for the same L1 sets).
+/// loops; larger blocks' runs of arrays compete for the same L1 sets
+/// (docs/performance.md "Measurements the code relies on").
 constexpr std::uint32_t block = 512;
 
 /// A fixed number in [0, 1) per flake (integer hash of its id), for thinning

@@ -17,7 +17,7 @@ void SceneDepthTexture::capture(glm::ivec2 viewport) {
     }
     // A depth format makes the copy read the depth buffer, not colour; depth +
     // stencil like the contexts' buffers (OSMesa, EGL) keeps it a plain copy on
-    // llvmpipe (a DEPTH_COMPONENT24 target took ~14 ms at 640x480, this ~1 ms).
+    // llvmpipe (docs/performance.md "Measurements the code relies on").
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, size_.x, size_.y);
 }
 

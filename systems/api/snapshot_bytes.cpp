@@ -6,6 +6,8 @@
 // gathered in the order below) and an FNV-1a checksum of all that precedes it.
 #include "systems/api/simulation_internals.hpp"
 
+#include "systems/api/state_records.hpp"
+
 #include "ecs/state_hash.hpp"
 #include "systems/api/validation.hpp"
 #include "systems/core/limits.hpp"
@@ -41,48 +43,7 @@ std::uint64_t checksum(std::span<const std::byte> bytes) {
     return h.digest();
 }
 
-void save_ledger(ByteWriter& out, const MassLedger& l, const SimCounters& c) {
-    for (const std::uint64_t v :
-         {l.spawned, l.removed_bounds, l.removed_sphere, l.removed_bare, l.removed_surface}) {
-        out(v);
-    }
-    for (const std::uint64_t v : {c.stiff_flake_ticks, c.landed, c.rolled, c.smoothing_iterations,
-                                  c.spilled_units, c.occlusion_refreshes, c.carved_units}) {
-        out(v);
-    }
-}
-
-void load_ledger(ByteReader& in, MassLedger& l, SimCounters& c) {
-    for (auto* v :
-         {&l.spawned, &l.removed_bounds, &l.removed_sphere, &l.removed_bare, &l.removed_surface}) {
-        in(*v);
-    }
-    for (auto* v : {&c.stiff_flake_ticks, &c.landed, &c.rolled, &c.smoothing_iterations,
-                    &c.spilled_units, &c.occlusion_refreshes, &c.carved_units}) {
-        in(*v);
-    }
-}
-
-/// Entity, record; for every T the snapshot holds.
-template <typename T>
-void save_each(ByteWriter& out, const World& world) {
-    out(static_cast<std::uint64_t>(world.count<T>()));
-    world.each<T>([&](Entity e, const T& item) {
-        out(e.bits);
-        save_state(out, item);
-    });
-}
-
-/// A resource that may be absent: a flag, then its record.
-template <typename T>
-void save_optional(ByteWriter& out, const T* item) {
-    out(item != nullptr);
-    if (item != nullptr) {
-        save_state(out, *item);
-    }
-}
-
-/// Reads what save_each wrote: each entity must hold a T in `world` (which
+/// Reads what write_each wrote: each entity must hold a T in `world` (which
 /// gives the item its scene settings before `load` reads its state).
 template <typename T, typename Load>
 void load_each(ByteReader& in, const World& world, const char* what,
@@ -125,16 +86,16 @@ std::vector<std::byte> Simulation::save_bytes() const {
     out(build_tag());
     out(impl_->scene_fingerprint());
     out(tick_count());
-    save_ledger(out, world.resource<MassLedger>(), counters());
+    ledger_record(out, world.resource<MassLedger>(), counters());
     save_state(out, world.resource<FlakePool>());
-    save_optional(out, world.try_resource<Wind>());
-    save_optional(out, world.try_resource<WindField>());
+    write_optional(out, world.try_resource<Wind>());
+    write_optional(out, world.try_resource<WindField>());
     const auto* map = world.try_resource<OcclusionMap>();
-    save_optional(
+    write_optional(
         out, map != nullptr && map->built ? map : nullptr); // as save_snapshot(): only a built map
-    save_each<SnowSurface>(out, world);
-    save_each<SnowCover>(out, world);
-    save_each<Body>(out, world);
+    write_each<SnowSurface>(out, world);
+    write_each<SnowCover>(out, world);
+    write_each<Body>(out, world);
     std::vector<std::byte>& bytes = out.bytes();
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
@@ -186,7 +147,7 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
     in.record("clock");
     in(s.clock.tick);
     in.record("ledger");
-    load_ledger(in, s.ledger, s.counters);
+    ledger_record(in, s.ledger, s.counters);
     in.record("flakes");
     s.flakes.reset(world.resource<FlakePool>().capacity());
     load_state(in, s.flakes);

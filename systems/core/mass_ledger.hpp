@@ -22,4 +22,18 @@ struct MassLedger {
     }
 };
 
+/// The ledger's and the counters' record: the state hash and the snapshot
+/// read and write these fields, in this order (Io: ByteWriter or ByteReader).
+template <typename Io, typename Ledger, typename Counters>
+void ledger_record(Io& io, Ledger& l, Counters& c) {
+    for (auto* v :
+         {&l.spawned, &l.removed_bounds, &l.removed_sphere, &l.removed_bare, &l.removed_surface}) {
+        io(*v);
+    }
+    for (auto* v : {&c.stiff_flake_ticks, &c.landed, &c.rolled, &c.smoothing_iterations,
+                    &c.spilled_units, &c.occlusion_refreshes, &c.carved_units}) {
+        io(*v);
+    }
+}
+
 } // namespace snow

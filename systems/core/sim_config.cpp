@@ -1,5 +1,7 @@
 #include "systems/core/sim_config.hpp"
 
+#include "systems/core/state_bytes.hpp"
+
 #include <array>
 #include <string>
 #include <utility>
@@ -50,6 +52,18 @@ Invalid validate(const SimConfig& c) {
                     static_cast<double>(c.integrator));
     }
     return e;
+}
+
+void hash_state(StateHasher& h, const SimConfig& c) {
+    ByteWriter out(h);
+    out(c.seed);
+    out(c.dt);
+    out(c.gravity);
+    out(c.integrator);
+    out(c.bounds.min);
+    out(c.bounds.max);
+    out(c.max_flakes);
+    out(c.smoothing_iterations);
 }
 
 } // namespace snow

@@ -37,4 +37,9 @@ inline constexpr FieldRule<SimConfig> sim_config_fields[] = {
 
 [[nodiscard]] Invalid validate(const SimConfig& c);
 
+class StateHasher;
+/// Field by field, so no padding byte enters the hash. Not the thread count
+/// or task system: they change no result.
+void hash_state(StateHasher& h, const SimConfig& c);
+
 } // namespace snow

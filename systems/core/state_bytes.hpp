@@ -6,6 +6,7 @@
 #pragma once
 
 #include "ecs/error.hpp"
+#include "ecs/state_hash.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -35,6 +36,11 @@ concept ByteScalar = std::is_arithmetic_v<T> || std::is_enum_v<T> ||
 class ByteWriter {
   public:
     static constexpr bool reading = false;
+
+    ByteWriter() = default;
+    /// Writes into `hash` instead of a buffer: a type whose state hash covers
+    /// exactly its record hashes through the record (one field list for both).
+    explicit ByteWriter(StateHasher& hash) : hash_(&hash) {}
 
     template <ByteScalar T>
     void operator()(const T& v) {
@@ -76,9 +82,14 @@ class ByteWriter {
 
   private:
     void put(const void* p, std::size_t n) {
+        if (hash_ != nullptr) {
+            hash_->bytes(p, n);
+            return;
+        }
         const auto* b = static_cast<const std::byte*>(p);
         bytes_.insert(bytes_.end(), b, b + n);
     }
+    StateHasher* hash_ = nullptr;
     std::vector<std::byte> bytes_;
 };
 

@@ -9,6 +9,10 @@
 
 namespace snow {
 
+class StateHasher;
+/// Every setting of the emitter (the host may change its rate).
+void hash_state(StateHasher& h, const Emitter& m);
+
 /// `emitter.*`; each min <= its max is checked by validate().
 inline constexpr FieldRule<Emitter> emitter_fields[] = {
     {"rate", &Emitter::rate, between(0, max_emitter_rate)},

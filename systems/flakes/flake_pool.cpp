@@ -172,4 +172,28 @@ Invalid validate(const FlakeSpec& f) {
     return check_fields("flake", flake_fields, f);
 }
 
+void hash_state(StateHasher& h, const FlakePool& f) {
+    h.value(f.capacity());
+    for (const std::uint32_t v : {f.alive, f.max_alive, f.slot_end, f.next_id}) {
+        h.value(v);
+    }
+    for (std::uint32_t i = 0; i < f.slot_end; ++i) {
+        if (!f.is_alive(i)) {
+            continue;
+        }
+        h.value(i);
+        for (const auto* a : {&f.px, &f.py, &f.pz, &f.vx, &f.vy, &f.vz, &f.k_over_m, &f.size}) {
+            h.value((*a)[i]);
+        }
+        h.value(f.mass_units[i]);
+        h.value(f.id[i]);
+        if (f.holds_wind()) {
+            for (const auto& a : f.held_wind) {
+                h.value(a[i]);
+            }
+        }
+    }
+    h.span(std::span<const std::uint32_t>(f.free_stack));
+}
+
 } // namespace snow

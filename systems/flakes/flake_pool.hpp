@@ -123,6 +123,10 @@ void save_state(ByteWriter& out, const FlakePool& f);
 /// Reads a record of save_state into `f`, a pool of the capacity it was
 /// saved with (throws SimulationError naming what is wrong otherwise).
 void load_state(ByteReader& in, FlakePool& f);
+class StateHasher;
+/// The alive slots and the free stack; the path starts are rewritten by the
+/// next integrate before anything reads them, so they are not state.
+void hash_state(StateHasher& h, const FlakePool& f);
 
 /// `flake.*`: one flake placed by hand.
 inline constexpr FieldRule<FlakeSpec> flake_fields[] = {

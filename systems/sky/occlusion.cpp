@@ -179,4 +179,21 @@ Invalid validate(const OcclusionCamera& cam) {
     return check_fields("occlusion", occlusion_fields, cam);
 }
 
+void hash_state(StateHasher& h, const OcclusionMap& m, bool stale) {
+    ByteWriter out(h);
+    for (const float v : {m.x0, m.z0, m.texel}) {
+        out(v);
+    }
+    out(m.width);
+    out(m.height);
+    for (const float v : {m.wind_angle, m.shear_x, m.shear_z}) {
+        out(v);
+    }
+    out(stale);
+    if (stale) {
+        out(m.top_y);
+        out(m.top_id);
+    }
+}
+
 } // namespace snow

@@ -42,5 +42,9 @@ class ByteReader;
 void save_state(ByteWriter& out, const OcclusionMap& m);
 /// Reads a record of save_state into `m` (throws SimulationError naming what is wrong).
 void load_state(ByteReader& in, OcclusionMap& m);
+class StateHasher;
+/// A built map where it is not a pure function of hashed state: its lean
+/// (held with hysteresis) always, its texels while it is `stale`.
+void hash_state(StateHasher& h, const OcclusionMap& m, bool stale);
 
 } // namespace snow

@@ -249,4 +249,13 @@ Invalid validate(const CoverDef& def) {
     return e;
 }
 
+void hash_state(StateHasher& h, const SnowCover& c, const SnowSurface& surface, bool stale) {
+    ByteWriter out(h);
+    out(surface.base_level);
+    out(stale);
+    if (stale) {
+        out(c.column_top);
+    }
+}
+
 } // namespace snow

@@ -51,6 +51,13 @@ class ByteReader;
 void save_state(ByteWriter& out, const SnowCover& c);
 /// Reads a record of save_state into `c`, whose surface has `cells` cells.
 void load_state(ByteReader& in, SnowCover& c, std::size_t cells);
+class StateHasher;
+/// A cover's base (`surface`'s base_level) is state: it follows the geometry
+/// only as far as the flake pool takes the snow it sheds, so it is hashed
+/// whole. Its column tops are a pure function of the sources while it is
+/// current, so they are hashed only while it is `stale`; its closed edges and
+/// drop cells are functions of those two.
+void hash_state(StateHasher& h, const SnowCover& c, const SnowSurface& surface, bool stale);
 
 /// True for a cover's entity (its surface is snow over the geometry, not geometry).
 [[nodiscard]] bool is_cover(const World& w, Entity e);

@@ -259,4 +259,18 @@ Invalid validate(const SurfaceDef& def) {
     return e;
 }
 
+void hash_state(StateHasher& h, const SnowSurface& s) {
+    ByteWriter out(h);
+    out(s.snow);
+    if (!s.compacted.empty()) { // never compacted: the hash is what it was before compaction
+        out(s.compacted);
+    }
+    for (const std::uint32_t v : {s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1}) {
+        out(v);
+    }
+    out(s.tile_dirty);
+    out(s.dirty_tiles);
+    out(s.level_bound);
+}
+
 } // namespace snow

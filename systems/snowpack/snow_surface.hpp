@@ -201,9 +201,9 @@ struct SnowSurface {
     [[nodiscard]] std::uint64_t settled_units() const;
 };
 
-/// Component on a surface entity: the solid it lies on (null for the ground).
 class ByteWriter;
 class ByteReader;
+class StateHasher;
 /// A surface's snapshot record: what ticks change (its snow, compaction,
 /// cells waiting for smoothing and, for a cover, its base); the placement
 /// and settings are the scene's.
@@ -211,6 +211,12 @@ void save_state(ByteWriter& out, const SnowSurface& s);
 /// Reads a record of save_state into `s`, the same surface as the scene
 /// declares it (throws SimulationError naming what is wrong).
 void load_state(ByteReader& in, SnowSurface& s);
+/// What ticks change in a surface: its snow and its compaction, the cells
+/// waiting for smoothing (they decide next tick's work) and the bound the
+/// deposit's prefilter uses (a cover's base: its cover's hash_state).
+void hash_state(StateHasher& h, const SnowSurface& s);
+
+/// Component on a surface entity: the solid it lies on (null for the ground).
 
 struct SurfaceOf {
     Entity owner;

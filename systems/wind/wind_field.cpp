@@ -128,4 +128,21 @@ Invalid validate(const WindFieldDef& d) {
     return e;
 }
 
+void hash_state(StateHasher& h, const WindField& f) {
+    ByteWriter out(h);
+    def_record(out, f.def);
+    out(f.origin);
+    out(f.inv_cell);
+    for (const auto& v : f.velocity) {
+        out(v);
+    }
+    out(f.pressure);
+    out(f.inflow);
+    out(f.wait);
+    out(f.steps);
+    if (f.transport) {
+        transport_record(out, *f.transport);
+    }
+}
+
 } // namespace snow

@@ -230,6 +230,11 @@ void load_def(ByteReader& in, WindFieldDef& def);
 /// Reads the rest of the record into `f`, made from that def (validated) by
 /// make_wind_field; throws SimulationError naming what is wrong.
 void load_state(ByteReader& in, WindField& f);
+class StateHasher;
+/// Its settings and grid and its state (velocities, the pressure the next
+/// projection starts from, inflow, step clock); not what derives from them
+/// (cell-centre velocities, the solver).
+void hash_state(StateHasher& h, const WindField& f);
 
 /// Packs at_centre into packed_centre: after every step, and after anything
 /// else that writes at_centre.
