@@ -18,7 +18,6 @@
 
 #include <snow/defs.hpp>
 #include <snow/error.hpp>
-#include <snow/ids.hpp>
 #include <snow/task_system.hpp>
 #include <snow/views.hpp>
 

@@ -1,7 +1,12 @@
 /// @file views.hpp
-/// @brief What a host reads back from a Simulation: read-only views over its
-/// own arrays (valid until the next call that changes the simulation) and
-/// plain reports. Self-contained: the standard library and GLM only.
+/// @brief How a host names and reads what a Simulation holds: typed ids
+/// (Box2D's b2BodyId) — each names one kind of thing, so passing a surface
+/// where a body belongs does not compile, and each carries a generation, so
+/// an id of something removed is refused (snow::SimulationError) instead of
+/// reaching its successor; a default-constructed id is null — and read-only
+/// views over the simulation's own arrays (valid until the next call that
+/// changes it) and plain reports. Self-contained: the standard library and
+/// GLM only.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -11,9 +16,22 @@
 #include <span>
 
 #include <snow/defs.hpp>
-#include <snow/ids.hpp>
 
 namespace snow {
+
+/// One kind of handle; `Tag` only tells the kinds apart.
+template <typename Tag>
+struct Id {
+    std::uint32_t bits = 0; ///< slot and generation, opaque to the host
+    [[nodiscard]] constexpr bool is_null() const { return bits == 0; }
+    friend constexpr bool operator==(Id, Id) = default;
+};
+
+using EmitterId = Id<struct EmitterTag>;   ///< Simulation::add_emitter
+using SurfaceId = Id<struct SurfaceTag>;   ///< Simulation::add_surface
+using CoverId = Id<struct CoverTag>;       ///< Simulation::add_cover
+using BodyId = Id<struct BodyTag>;         ///< Simulation::add_body
+using ColliderId = Id<struct ColliderTag>; ///< add_box, add_sphere, add_mesh_collider
 
 /// The invariant `spawned == airborne + settled + carried + removed`, all in
 /// integer mass units (docs/design.md "Mass"); `carried` is the snow

@@ -22,7 +22,6 @@
 #include <cstdint>
 #include <memory>
 
-#include <snow/ids.hpp>
 #include <snow/snow.hpp>
 
 namespace snow {
