@@ -1,6 +1,6 @@
 /// @file scene_build.hpp
 /// @brief Turns a read and validated scene into a Simulation, only through the
-/// facade (systems/api/simulation.hpp), and its SceneVisuals (internal to snow::scene).
+/// facade (<snow/snow.hpp>), and its SceneVisuals (internal to snow::scene).
 #pragma once
 
 #include "game/scene/scene_geometry.hpp"

@@ -1,0 +1,108 @@
+// Flakes against Locatelli & Hobbs 1974 [LH74]: aggregates of unrimed
+// dendrites fall at v = 0.8·D^0.16 m/s and weigh m = 0.073·D^1.4 mg, D the
+// largest dimension in mm (measured over 2–10 mm).
+#include "bench/validation/validation.hpp"
+
+#include "systems/core/units.hpp"
+
+#include <snow/snow.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace snow::validation {
+
+namespace {
+
+struct Flake {
+    double d_mm;    ///< diameter
+    double speed;   ///< downward speed (m/s)
+    double mass_mg; ///< what the flake weighs
+};
+
+/// The flakes in the air after a still-air snowfall from a default emitter
+/// (what a scene gets when it declares no sizes).
+std::vector<Flake> falling_flakes(const Plan& plan) {
+    SimConfig config;
+    config.seed = 30;
+    config.bounds = {{-5.0f, 0.0f, -5.0f}, {5.0f, 30.0f, 5.0f}};
+    config.max_flakes = 60000;
+    Simulation sim(config);
+    Emitter emitter;
+    emitter.rate = plan.quick ? 500.0f : 4000.0f;
+    sim.add_emitter(emitter);
+    sim.run(plan.quick ? 120 : 600);
+    const FlakesView f = sim.flakes();
+    std::vector<Flake> out;
+    for (std::size_t i = 0; i < f.slots(); ++i) {
+        if (f.is_alive(i)) {
+            out.push_back({f.size[i] * 1000.0, -f.vy[i], f.mass_units[i] * unit_kg * 1.0e6});
+        }
+    }
+    return out;
+}
+
+/// Sizes the rows look at (mm); a bin is D/1.25 .. D·1.25.
+constexpr double sizes_mm[] = {2.0, 5.0, 10.0};
+
+template <typename Value>
+double median_in_bin(const std::vector<Flake>& flakes, double d_mm, const Value& value) {
+    std::vector<double> v;
+    for (const Flake& f : flakes) {
+        if (f.d_mm >= d_mm / 1.25 && f.d_mm < d_mm * 1.25) {
+            v.push_back(value(f));
+        }
+    }
+    if (v.empty()) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+std::string number(const char* format, double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, v);
+    return text;
+}
+
+} // namespace
+
+std::vector<Row> fall_speed_by_size(const Plan& plan) {
+    const std::vector<Flake> flakes = falling_flakes(plan);
+    std::vector<Row> rows;
+    for (const double d : sizes_mm) {
+        const double v = 0.8 * std::pow(d, 0.16);
+        rows.push_back({"fall speed, D = " + number("%.0f", d) + " mm (median)",
+                        "0.8·D^0.16 = " + number("%.2f", v) + " m/s [LH74]",
+                        "still air, default emitter",
+                        median_in_bin(flakes, d, [](const Flake& f) { return f.speed; }), "m/s",
+                        0.8 * v, 1.2 * v});
+    }
+    // The size dependence alone: big flakes fall faster than small ones.
+    const auto speed = [](const Flake& f) { return f.speed; };
+    const double ratio = std::pow(5.0, 0.16);
+    rows.push_back({"fall speed, D = 10 mm over D = 2 mm",
+                    "5^0.16 = " + number("%.2f", ratio) + " [LH74]", "still air, default emitter",
+                    median_in_bin(flakes, 10.0, speed) / median_in_bin(flakes, 2.0, speed), "",
+                    1.0 + 0.5 * (ratio - 1.0), 1.0 + 1.5 * (ratio - 1.0)});
+    return rows;
+}
+
+std::vector<Row> flake_mass_by_size(const Plan& plan) {
+    const std::vector<Flake> flakes = falling_flakes(plan);
+    std::vector<Row> rows;
+    for (const double d : sizes_mm) {
+        const double m = 0.073 * std::pow(d, 1.4);
+        rows.push_back({"flake mass, D = " + number("%.0f", d) + " mm (median)",
+                        "0.073·D^1.4 = " + number("%.2f", m) + " mg [LH74]",
+                        "still air, default emitter",
+                        median_in_bin(flakes, d, [](const Flake& f) { return f.mass_mg; }), "mg",
+                        0.5 * m, 2.0 * m});
+    }
+    return rows;
+}
+
+} // namespace snow::validation

@@ -1,0 +1,185 @@
+// Settled snow against measurements: the density of fresh snow by air
+// temperature [HP98], the flanks of a pile poured at one point [NSA]
+// (natural slope angle of loose snow, 37–53° by grain type) and what a roof
+// keeps by its pitch [EN1991] (the code's roof shape coefficient).
+#include "bench/validation/validation.hpp"
+
+#include "systems/core/units.hpp"
+
+#include <snow/snow.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace snow::validation {
+
+namespace {
+
+std::string number(const char* format, double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, v);
+    return text;
+}
+
+/// kg of snow a grid holds per m² of its horizontal area.
+double load(const SnowGrid& g) {
+    std::uint64_t units = 0;
+    for (const std::uint32_t u : g.units) {
+        units += u;
+    }
+    return static_cast<double>(units) * unit_kg / (g.nx * g.cell * g.nz * g.cell);
+}
+
+/// Where the profile from cell (ix, iz) in direction (dx, dz) first falls to
+/// `level` (m of depth), in metres from the cell's centre (linear between cells).
+double crossing(const SnowGrid& g, std::uint32_t ix, std::uint32_t iz, int dx, int dz,
+                double level) {
+    double previous = g.depth(g.index(ix, iz));
+    for (int k = 1;; ++k) {
+        const int x = static_cast<int>(ix) + k * dx, z = static_cast<int>(iz) + k * dz;
+        if (x < 0 || z < 0 || x >= static_cast<int>(g.nx) || z >= static_cast<int>(g.nz)) {
+            return k * g.cell; // the pile reaches the grid's edge
+        }
+        const double d =
+            g.depth(g.index(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(z)));
+        if (d <= level) {
+            return (k - 1 + (previous - level) / (previous - d)) * g.cell;
+        }
+        previous = d;
+    }
+}
+
+/// Mean flank angle (degrees) of the pile on `g`: the slope between 80 % and
+/// 20 % of its height, along the four grid directions from its top.
+double flank_degrees(const SnowGrid& g) {
+    std::size_t top = 0;
+    for (std::size_t i = 1; i < g.cell_count(); ++i) {
+        top = g.units[i] > g.units[top] ? i : top;
+    }
+    const auto ix = static_cast<std::uint32_t>(top % g.nx);
+    const auto iz = static_cast<std::uint32_t>(top / g.nx);
+    const double h = g.depth(top);
+    double sum = 0.0;
+    for (const auto& [dx, dz] :
+         std::array<std::array<int, 2>, 4>{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}}) {
+        const double run =
+            crossing(g, ix, iz, dx, dz, 0.2 * h) - crossing(g, ix, iz, dx, dz, 0.8 * h);
+        sum += std::atan2(0.6 * h, run);
+    }
+    return sum / 4.0 * 180.0 / std::numbers::pi;
+}
+
+/// Pours `units` of snow onto the centre of a flat surface of `cell` metres,
+/// lets it come to rest and returns its flank angle.
+double poured_pile(double cell, std::uint64_t units, const Plan& plan) {
+    SimConfig config;
+    config.seed = 31;
+    config.bounds = {{-2.0f, -1.0f, -2.0f}, {2.0f, 4.0f, 2.0f}};
+    config.max_flakes = 1000;
+    Simulation sim(config);
+    SurfaceDef def;
+    def.x0 = def.z0 = -1.5f;
+    def.size_x = def.size_z = 3.0f;
+    def.cell = static_cast<float>(cell);
+    def.spills = false;
+    const SurfaceId surface = sim.add_surface(def);
+    const SnowGrid first = sim.surface(surface);
+    const std::size_t centre = first.index(first.nx / 2, first.nz / 2);
+    const float x = first.x0 + (first.nx / 2 + 0.5f) * first.cell;
+    const float z = first.z0 + (first.nz / 2 + 0.5f) * first.cell;
+    for (std::uint64_t poured = 0; poured < units;) {
+        const float top = static_cast<float>(sim.surface(surface).depth(centre));
+        for (int k = 0; k < 10 && poured < units; ++k, poured += max_flake_units) {
+            (void)sim.place_flake(
+                {{x, top + 0.01f, z}, {0.0f, -1.0f, 0.0f}, 9.81f, 0.01f, max_flake_units});
+        }
+        sim.tick();
+    }
+    sim.run(plan.quick ? 120 : 1200);
+    return flank_degrees(sim.surface(surface));
+}
+
+/// Roof over ground load after `seconds` of still-air snowfall onto a roof
+/// of `pitch` degrees (the village's roofs: lines slide at 3 cm mean depth).
+double roof_over_ground(double pitch, const Plan& plan) {
+    SimConfig config;
+    config.seed = 32;
+    config.bounds = {{-4.0f, 0.0f, -2.0f}, {4.0f, 8.0f, 2.0f}};
+    config.max_flakes = 40000;
+    Simulation sim(config);
+    sim.add_emitter(Emitter{});
+    SurfaceDef ground;
+    ground.x0 = 1.0f;
+    ground.z0 = -1.0f;
+    ground.size_x = ground.size_z = 2.0f;
+    ground.cell = 0.1f;
+    ground.spills = false;
+    const SurfaceId g = sim.add_surface(ground);
+    SurfaceDef roof = ground;
+    roof.x0 = -3.0f;
+    roof.base_y = 2.0f;
+    roof.slope_x = static_cast<float>(std::tan(pitch * std::numbers::pi / 180.0));
+    roof.spills = true;
+    roof.slide_depth = 0.03f;
+    const SurfaceId r = sim.add_surface(roof);
+    sim.run(plan.quick ? 600 : 18000);
+    return load(sim.surface(r)) / load(sim.surface(g));
+}
+
+} // namespace
+
+std::vector<Row> fresh_snow_density(const Plan&) {
+    SimConfig config;
+    Simulation sim(config);
+    SurfaceDef def;
+    def.size_x = def.size_z = 0.1f;
+    def.cell = 0.1f;
+    const SurfaceId surface = sim.add_surface(def);
+    const std::uint32_t units = 10000;
+    sim.add_settled_snow(surface, 0, 0, units);
+    const SnowGrid g = sim.surface(surface);
+    const double density = units * unit_kg / (g.depth(0) * g.cell * g.cell);
+    std::vector<Row> rows;
+    for (const double t : {-10.0, -5.0, -1.0}) {
+        const double rho = 67.92 + 51.25 * std::exp(t / 2.59);
+        rows.push_back({"fresh snow density, air " + number("%.0f", t) + " °C",
+                        "67.92 + 51.25·e^(T/2.59) = " + number("%.0f", rho) + " kg/m³ [HP98]",
+                        "snow added to a flat surface", density, "kg/m³", 0.75 * rho, 1.25 * rho});
+    }
+    return rows;
+}
+
+std::vector<Row> pile_flank_angle(const Plan& plan) {
+    std::vector<Row> rows;
+    for (const double cell : {0.05, 0.1}) {
+        for (const std::uint64_t units : {std::uint64_t{300000}, std::uint64_t{3000000}}) {
+            rows.push_back({"pile flank, " + number("%.1f", units * unit_kg) + " kg poured, cell " +
+                                number("%.0f", cell * 100.0) + " cm",
+                            "loose dry snow: 37–53° [NSA]", "one point on a flat surface",
+                            poured_pile(cell, plan.quick ? units / 10 : units, plan), "°", 37.0,
+                            53.0});
+        }
+    }
+    return rows;
+}
+
+std::vector<Row> roof_load_by_pitch(const Plan& plan) {
+    struct Pitch {
+        double degrees, low, high;
+        const char* code;
+    };
+    std::vector<Row> rows;
+    for (const Pitch& p : {Pitch{15.0, 0.7, 1.0, "0.8"}, Pitch{30.0, 0.7, 1.0, "0.8"},
+                           Pitch{45.0, 0.2, 0.6, "0.4"}, Pitch{60.0, 0.0, 0.1, "0"}}) {
+        rows.push_back({"roof / ground load, pitch " + number("%.0f", p.degrees) + "°",
+                        std::string("μ1 = ") + p.code + " [EN1991]",
+                        "5 min of still-air snowfall on a plane roof",
+                        roof_over_ground(p.degrees, plan), "", p.low, p.high});
+    }
+    return rows;
+}
+
+} // namespace snow::validation

@@ -1,0 +1,101 @@
+// snow_validate: runs every probe of the validation table (issue #30) and
+// writes it as Markdown; scripts/validate.sh puts it into docs/validation.md.
+#include "bench/validation/validation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+namespace {
+
+using namespace snow::validation;
+
+constexpr const char* usage = R"(usage: snow_validate [--quick] [--out FILE]
+  --out FILE   write the Markdown table there (default: standard output)
+  --quick      seconds-long smoke run; its numbers are not for the table
+  --help       this text
+Exit status: 0 ok (whatever the rows say), 2 bad arguments, 1 failure.
+)";
+
+std::string value_text(double v) {
+    if (std::isnan(v)) {
+        return "none";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, std::fabs(v) >= 10.0 ? "%.1f" : "%.3g", v);
+    return text;
+}
+
+std::string with_unit(const std::string& v, const std::string& unit) {
+    return unit.empty() ? v : v + " " + unit;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Plan plan;
+    std::string out;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        if (a == "--quick") {
+            plan.quick = true;
+        } else if (a == "--out" && i + 1 < argc) {
+            out = argv[++i];
+        } else if (a == "--help") {
+            std::fputs(usage, stdout);
+            return 0;
+        } else {
+            std::fprintf(stderr, "snow_validate: unknown or incomplete argument '%s'\n%s", argv[i],
+                         usage);
+            return 2;
+        }
+    }
+    const Probe probes[] = {
+        {"fall speed by size", fall_speed_by_size}, {"flake mass by size", flake_mass_by_size},
+        {"fresh snow density", fresh_snow_density}, {"pile flank angle", pile_flank_angle},
+        {"roof load by pitch", roof_load_by_pitch},
+    };
+    try {
+        std::ostringstream table;
+        table << "| quantity | published | scene | ours | band | in band |\n"
+              << "|---|---|---|---|---|---|\n";
+        int rows = 0, passed = 0;
+        for (const Probe& probe : probes) {
+            std::fprintf(stderr, "snow_validate: %s ...", probe.name);
+            const auto t0 = std::chrono::steady_clock::now();
+            for (const Row& r : probe.run(plan)) {
+                table << "| " << r.quantity << " | " << r.published << " | " << r.scene << " | "
+                      << with_unit(value_text(r.ours), r.unit) << " | "
+                      << with_unit(value_text(r.low) + " – " + value_text(r.high), r.unit) << " | "
+                      << (r.pass() ? "yes" : "**no**") << " |\n";
+                ++rows;
+                passed += r.pass() ? 1 : 0;
+            }
+            std::fprintf(
+                stderr, " %.1f s\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        }
+        table << "\n" << passed << " of " << rows << " rows in band.\n";
+        if (out.empty()) {
+            std::cout << table.str();
+        } else {
+            std::ofstream file(out);
+            file << table.str();
+            if (!file) {
+                std::fprintf(stderr, "snow_validate: cannot write %s\n", out.c_str());
+                return 1;
+            }
+        }
+        std::fprintf(stderr, "snow_validate: %d of %d rows in band\n", passed, rows);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "\nsnow_validate: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,41 @@
+/// @file validation.hpp
+/// @brief One row of the validation table (docs/validation.md): a quantity
+/// the simulation produces, the published value it is held to and the band
+/// the source's scatter allows.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace snow::validation {
+
+struct Row {
+    std::string quantity;  ///< what is measured, e.g. "fall speed, D = 5 mm"
+    std::string published; ///< the published value or law, with its key in docs/references.md
+    std::string scene;     ///< what the probe runs
+    double ours = 0.0;     ///< what the simulation gives
+    std::string unit;
+    double low = 0.0, high = 0.0; ///< the pass band, in `unit`
+    [[nodiscard]] bool pass() const { return ours >= low && ours <= high; }
+};
+
+/// How long the probes simulate: `quick` is a seconds-long smoke run whose
+/// numbers are not for the table.
+struct Plan {
+    bool quick = false;
+};
+
+/// A group of rows; `name` is printed as progress while it runs.
+struct Probe {
+    const char* name;
+    std::function<std::vector<Row>(const Plan&)> run;
+};
+
+[[nodiscard]] std::vector<Row> fall_speed_by_size(const Plan& plan);
+[[nodiscard]] std::vector<Row> flake_mass_by_size(const Plan& plan);
+[[nodiscard]] std::vector<Row> fresh_snow_density(const Plan& plan);
+[[nodiscard]] std::vector<Row> pile_flank_angle(const Plan& plan);
+[[nodiscard]] std::vector<Row> roof_load_by_pitch(const Plan& plan);
+
+} // namespace snow::validation
