@@ -5,6 +5,7 @@
 #include "bench/validation/validation.hpp"
 
 #include "systems/core/units.hpp"
+#include "tests/scenes/poured_pile.hpp"
 
 #include <snow/snow.hpp>
 
@@ -31,75 +32,6 @@ double load(const SnowGrid& g) {
         units += u;
     }
     return static_cast<double>(units) * unit_kg / (g.nx * g.cell * g.nz * g.cell);
-}
-
-/// Where the profile from cell (ix, iz) in direction (dx, dz) first falls to
-/// `level` (m of depth), in metres from the cell's centre (linear between cells).
-double crossing(const SnowGrid& g, std::uint32_t ix, std::uint32_t iz, int dx, int dz,
-                double level) {
-    double previous = g.depth(g.index(ix, iz));
-    for (int k = 1;; ++k) {
-        const int x = static_cast<int>(ix) + k * dx, z = static_cast<int>(iz) + k * dz;
-        if (x < 0 || z < 0 || x >= static_cast<int>(g.nx) || z >= static_cast<int>(g.nz)) {
-            return k * g.cell; // the pile reaches the grid's edge
-        }
-        const double d =
-            g.depth(g.index(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(z)));
-        if (d <= level) {
-            return (k - 1 + (previous - level) / (previous - d)) * g.cell;
-        }
-        previous = d;
-    }
-}
-
-/// Mean flank angle (degrees) of the pile on `g`: the slope between 80 % and
-/// 20 % of its height, along the four grid directions from its top.
-double flank_degrees(const SnowGrid& g) {
-    std::size_t top = 0;
-    for (std::size_t i = 1; i < g.cell_count(); ++i) {
-        top = g.units[i] > g.units[top] ? i : top;
-    }
-    const auto ix = static_cast<std::uint32_t>(top % g.nx);
-    const auto iz = static_cast<std::uint32_t>(top / g.nx);
-    const double h = g.depth(top);
-    double sum = 0.0;
-    for (const auto& [dx, dz] :
-         std::array<std::array<int, 2>, 4>{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}}) {
-        const double run =
-            crossing(g, ix, iz, dx, dz, 0.2 * h) - crossing(g, ix, iz, dx, dz, 0.8 * h);
-        sum += std::atan2(0.6 * h, run);
-    }
-    return sum / 4.0 * 180.0 / std::numbers::pi;
-}
-
-/// Pours `units` of snow onto the centre of a flat surface of `cell` metres,
-/// lets it come to rest and returns its flank angle.
-double poured_pile(double cell, std::uint64_t units, const Plan& plan) {
-    SimConfig config;
-    config.seed = 31;
-    config.bounds = {{-2.0f, -1.0f, -2.0f}, {2.0f, 4.0f, 2.0f}};
-    config.max_flakes = 1000;
-    Simulation sim(config);
-    SurfaceDef def;
-    def.x0 = def.z0 = -1.5f;
-    def.size_x = def.size_z = 3.0f;
-    def.cell = static_cast<float>(cell);
-    def.spills = false;
-    const SurfaceId surface = sim.add_surface(def);
-    const SnowGrid first = sim.surface(surface);
-    const std::size_t centre = first.index(first.nx / 2, first.nz / 2);
-    const float x = first.x0 + (first.nx / 2 + 0.5f) * first.cell;
-    const float z = first.z0 + (first.nz / 2 + 0.5f) * first.cell;
-    for (std::uint64_t poured = 0; poured < units;) {
-        const float top = static_cast<float>(sim.surface(surface).depth(centre));
-        for (int k = 0; k < 10 && poured < units; ++k, poured += max_flake_units) {
-            (void)sim.place_flake(
-                {{x, top + 0.01f, z}, {0.0f, -1.0f, 0.0f}, 9.81f, 0.01f, max_flake_units});
-        }
-        sim.tick();
-    }
-    sim.run(plan.quick ? 120 : 1200);
-    return flank_degrees(sim.surface(surface));
 }
 
 /// Roof over ground load after `seconds` of still-air snowfall onto a roof
@@ -159,8 +91,9 @@ std::vector<Row> pile_flank_angle(const Plan& plan) {
             rows.push_back({"pile flank, " + number("%.1f", units * unit_kg) + " kg poured, cell " +
                                 number("%.0f", cell * 100.0) + " cm",
                             "loose dry snow: 37–53° [NSA]", "one point on a flat surface",
-                            poured_pile(cell, plan.quick ? units / 10 : units, plan), "°", 37.0,
-                            53.0});
+                            poured_pile_degrees(cell, plan.quick ? units / 10 : units,
+                                                plan.quick ? 120 : 1200),
+                            "°", 37.0, 53.0});
         }
     }
     return rows;

@@ -127,6 +127,9 @@ struct SurfaceDef {
     /// mean depth (m) slides off its low edge as one slab (a roof shedding
     /// its snow); 0 = it never slides. Needs a slope and spills.
     float slide_depth = 0.0f;
+    /// Angle of repose (degrees): snow on steeper slopes of its total height
+    /// slides down. Loose dry snow stands at 37–53° (docs/references.md [NSA]).
+    float repose_deg = 45.0f;
 };
 
 /// Settings to create a cover; see Simulation::add_cover().

@@ -25,6 +25,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 namespace snow {
@@ -245,12 +246,12 @@ void visit(TileGrid& g, std::uint32_t ix, std::uint32_t iz) {
     }
 }
 
-/// Whether flag_row's test holds on this surface: every edge open and no
-/// angle of repose, so only a cell over the cap with a neighbour at least
-/// edge_divisor levels lower can send (each edge carries at most 1/8 of its
-/// drop, rounded down).
+/// Whether flag_row's test holds on this surface: every edge open, so only a
+/// cell over the cap with a neighbour at least edge_divisor levels lower
+/// (each edge carries at most 1/8 of its drop, rounded down), or with a step
+/// steeper than the angle of repose, can send.
 bool prefiltered(const SnowSurface& s) {
-    return s.closed.empty() && s.talus_units == 0;
+    return s.closed.empty();
 }
 
 /// The interior columns of a box's rows (1 <= x0, x1 + 1 < nx): flag_row's range.
@@ -277,10 +278,12 @@ struct Levels {
     const std::uint32_t* packed;
     std::size_t nx;
     std::int64_t limit;
+    std::int64_t talus; ///< the angle of repose's step; never reached without one
 
     explicit Levels(const SnowSurface& s)
         : base(s.base_level.data()), snow(s.snow.data()), packed(s.compacted.data()), nx(s.nx),
-          limit(s.laplacian_limit_units) {}
+          limit(s.laplacian_limit_units),
+          talus(s.talus_units > 0 ? s.talus_units : std::numeric_limits<std::int64_t>::max()) {}
     /// The level of cell c, less the common base when Uniform.
     [[gnu::always_inline]] std::int64_t level(std::size_t c) const {
         const std::int64_t bottom = Uniform ? 0 : base[c];
@@ -301,14 +304,17 @@ struct Levels {
         }
     }
     /// Whether cell_outflow can move snow from interior cell c: it holds
-    /// snow, stands over the cap and has a neighbour edge_divisor levels
-    /// lower. Selects only, so a loop of it vectorises.
+    /// snow, and stands over the cap with a neighbour edge_divisor levels
+    /// lower or has a step down steeper than the angle of repose. Selects
+    /// only, so a loop of it vectorises.
     [[gnu::always_inline]] bool may_send(std::size_t c) const {
         const std::int64_t h = level(c);
         const std::int64_t l = level(c - 1), r = level(c + 1), d = level(c - nx), u = level(c + nx);
         const std::int64_t lower_lr = l < r ? l : r, lower_du = d < u ? d : u;
         const std::int64_t lowest = lower_lr < lower_du ? lower_lr : lower_du;
-        return (snow[c] != 0) & (4 * h - (l + r + d + u) > limit) & (h - lowest >= edge_divisor);
+        const std::int64_t drop = h - lowest;
+        return (snow[c] != 0) &
+               (((4 * h - (l + r + d + u) > limit) & (drop >= edge_divisor)) | (drop > talus));
     }
 };
 

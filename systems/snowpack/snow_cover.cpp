@@ -184,9 +184,8 @@ SnowSurface make_cover_surface(const CoverDef& def) {
     sd.edge_limit = def.edge_limit;
     sd.laplacian_limit = def.laplacian_limit;
     sd.spills = false; // its border is no edge of anything; a cover spills at its drops
+    sd.repose_deg = def.repose_deg;
     SnowSurface s = make_surface(sd);
-    const double talus = std::tan(def.repose_deg * std::numbers::pi / 180.0) * def.cell;
-    s.talus_units = std::max<std::int64_t>(1, std::llround(talus / s.unit_height));
     std::fill(s.base_level.begin(), s.base_level.end(), void_level);
     s.uniform_base = false; // the base follows the geometry (cover_system)
     s.closed.assign(s.cell_count(), closed_all);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace snow {
 
@@ -84,6 +85,9 @@ SnowSurface make_surface(const SurfaceDef& def) {
     // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
     const double lap = std::round(def.laplacian_limit * cell * cell / unit_height);
     s.laplacian_limit_units = static_cast<std::int64_t>(std::clamp(lap, 1.0, max_surface_level));
+    // The steepest step between neighbours the snow keeps [NSA]; never 0 (0 = no rule).
+    const double talus = std::tan(def.repose_deg * std::numbers::pi / 180.0) * cell;
+    s.talus_units = std::max<std::int64_t>(1, std::llround(talus / s.unit_height));
     return s;
 }
 

@@ -95,8 +95,8 @@ struct SnowSurface {
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
     /// Largest stable height step (levels) to a neighbour, the angle of
-    /// repose over one cell: steeper snow slides down. 0 = no such rule (a
-    /// declared rectangle, whose own slope is given).
+    /// repose over one cell (SurfaceDef::repose_deg): steeper snow slides
+    /// down. 0 = no such rule (only surfaces built by hand in tests).
     std::int64_t talus_units = 0;
     /// Mean depth (levels) above which a line down the slope slides
     /// (SurfaceDef::slide_depth); 0 = never.
@@ -248,6 +248,7 @@ inline constexpr FieldRule<SurfaceDef> surface_fields[] = {
     {"spills", &SurfaceDef::spills},
     {"laplacian_limit", &SurfaceDef::laplacian_limit, positive},
     {"slide_depth", &SurfaceDef::slide_depth, non_negative},
+    {"repose_deg", &SurfaceDef::repose_deg, positive_up_to(max_repose_deg)},
 };
 
 [[nodiscard]] Invalid validate(const SurfaceDef& def);
