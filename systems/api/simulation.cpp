@@ -23,7 +23,7 @@ bool flakes_alive(const World& w) {
 /// The T of entity `e`; throws SimulationError naming `field` when `e` is
 /// stale, null or has no T (`kind` says what it should have been).
 template <typename T, typename W>
-auto& component_of(W& world, Entity e, const std::string& field, const char* kind) {
+auto& component_of(W& world, Entity e, const char* field, const char* kind) {
     auto* c = world.alive(e) ? world.template try_get<T>(e) : nullptr;
     if (c == nullptr) {
         throw SimulationError(field, std::string("is not a living ") + kind);
@@ -350,9 +350,7 @@ ColliderId Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
         check::fail(e, "mesh.triangles (vertex count)", "a positive multiple of 3",
                     static_cast<double>(triangles.size()));
     }
-    for (std::size_t i = 0; i < triangles.size() && e.empty(); ++i) {
-        check::finite3(e, "mesh.triangles[" + std::to_string(i) + "]", triangles[i]);
-    }
+    check::finite_each(e, "mesh.triangles", triangles);
     throw_if(e);
     const Entity id = impl_->world.create();
     impl_->world.add<MeshCollider>(id, MeshCollider{std::move(triangles)});

@@ -281,15 +281,15 @@ std::uint64_t source_digest(const World& w) {
 /// component T on exactly the entities the snapshot saved one for.
 template <typename T>
 void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& saved,
-                   const std::string& what) {
+                   const char* what) {
     if (saved.size() != w.count<T>()) {
-        throw SimulationError("restore: snapshot belongs to a different scene (" + what +
-                              " count)");
+        throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
+                              what + " count)");
     }
     for (const auto& [e, component] : saved) {
         if (!w.has<T>(e)) {
-            throw SimulationError("restore: snapshot belongs to a different scene (" + what +
-                                  " missing)");
+            throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
+                                  what + " missing)");
         }
     }
 }

@@ -92,7 +92,7 @@ void load_each(ByteReader& in, const World& world, const char* what,
     in(n);
     in.require(n == world.count<T>(), "has another number of them than the scene");
     for (std::uint64_t k = 0; k < n; ++k) {
-        in.record(std::string(what) + "[" + std::to_string(k) + "]");
+        in.record(what, k);
         Entity e;
         in(e.bits);
         const T* now = world.alive(e) ? world.try_get<T>(e) : nullptr;

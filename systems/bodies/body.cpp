@@ -113,9 +113,7 @@ Invalid validate(const BodyMotion& m) {
     if (m.waypoints.empty()) {
         e = {"motion.waypoints", "must hold at least one point (got none)"};
     }
-    for (std::size_t i = 0; i < m.waypoints.size() && e.empty(); ++i) {
-        check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
-    }
+    check::finite_each(e, "motion.waypoints", m.waypoints);
     check_fields(e, "motion", motion_fields, m);
     return e;
 }
