@@ -15,7 +15,6 @@
 #include <span>
 #include <string>
 #include <utility>
-#include <vector>
 
 namespace snow {
 
@@ -280,8 +279,7 @@ std::uint64_t source_digest(const World& w) {
 /// Throws, before restore_snapshot() changes anything, unless the world holds a
 /// component T on exactly the entities the snapshot saved one for.
 template <typename T>
-void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& saved,
-                   const char* what) {
+void same_entities(const World& w, const Vector<std::pair<Entity, T>>& saved, const char* what) {
     if (saved.size() != w.count<T>()) {
         throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
                               what + " count)");
@@ -405,6 +403,7 @@ void restore_snapshot(Simulation& sim, const Snapshot& s) {
     for (const auto& [e, body] : s.bodies) {
         world.get<Body>(e) = body;
     }
+    InternalAccess::impl(sim).prepare(); // the restored arrays may have less room
 }
 
 } // namespace snow

@@ -86,7 +86,7 @@ void save_optional(ByteWriter& out, const T* item) {
 /// gives the item its scene settings before `load` reads its state).
 template <typename T, typename Load>
 void load_each(ByteReader& in, const World& world, const char* what,
-               std::vector<std::pair<Entity, T>>& items, const Load& load) {
+               Vector<std::pair<Entity, T>>& items, const Load& load) {
     in.record(what);
     std::uint64_t n = 0;
     in(n);
@@ -135,7 +135,7 @@ std::vector<std::byte> Simulation::save_bytes() const {
     save_each<SnowSurface>(out, world);
     save_each<SnowCover>(out, world);
     save_each<Body>(out, world);
-    std::vector<std::byte>& bytes = out.bytes();
+    std::vector<std::byte>& bytes = out.bytes(); // the host's: allocated as it allocates
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
     out(checksum(bytes));

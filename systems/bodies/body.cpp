@@ -49,8 +49,13 @@ Body make_body(const BodyDef& d) {
     b.snowball = d.snowball;
     b.compaction = d.compaction;
     b.position = b.previous = d.position;
-    b.motion = d.motion;
+    b.motion = body_path(d.motion);
     return b;
+}
+
+BodyPath body_path(const BodyMotion& motion) {
+    return {Vector<glm::vec3>(motion.waypoints.begin(), motion.waypoints.end()), motion.speed,
+            motion.loop};
 }
 
 float snowball_radius(float bare_radius, std::uint64_t units) {
