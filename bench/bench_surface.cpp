@@ -14,7 +14,7 @@ namespace {
 struct Field {
     Simulation sim;
     SurfaceId entity;
-    std::vector<std::uint32_t> bare; ///< the starting snow (restored between iterations)
+    Vector<std::uint32_t> bare; ///< the starting snow (restored between iterations)
 
     explicit Field(std::uint32_t side, bool spills = false) : sim(SimConfig{}) {
         SurfaceDef d;

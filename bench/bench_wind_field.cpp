@@ -64,7 +64,7 @@ void integrate_in_field(benchmark::State& state) {
 struct WindySquare {
     Simulation sim;
     SurfaceId surface;
-    std::vector<std::uint32_t> snow; ///< the starting snow
+    Vector<std::uint32_t> snow; ///< the starting snow
 
     WindySquare(std::uint32_t side, std::uint32_t windy) : sim(config(side)) {
         SurfaceDef d;

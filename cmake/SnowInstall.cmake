@@ -2,7 +2,7 @@
 # snow::sim and, when built, snow::scene, snow::render and snow::c (snow::ecs
 # comes along as their dependency). The public API is include/snow/ alone:
 #   <snow/snow.hpp>    snow::sim     the Simulation (no GL), with defs.hpp,
-#                                    views.hpp, error.hpp, task_system.hpp
+#                                    views.hpp, error.hpp, task_system.hpp, allocator.hpp
 #   <snow/scene.hpp>   snow::scene   glTF scene loading (no GL)
 #   <snow/render.hpp>  snow::render  the renderer and its GL contexts
 #   <snow/snow.h>      snow::c       the C API
@@ -17,7 +17,7 @@ include(CMakePackageConfigHelpers)
 # when an include was added or dropped without updating these lists.
 set(SNOW_SIM_HEADERS
     include/snow/snow.hpp include/snow/defs.hpp include/snow/error.hpp
-    include/snow/task_system.hpp include/snow/views.hpp)
+    include/snow/task_system.hpp include/snow/views.hpp include/snow/allocator.hpp)
 set(SNOW_SCENE_HEADERS include/snow/scene.hpp include/snow/render.hpp)
 set(SNOW_RENDER_HEADERS include/snow/render.hpp)
 set(SNOW_INTERNAL "^(ecs|systems|render|game)/")

@@ -20,10 +20,10 @@ function(snow_set_options target)
     endif()
 endfunction()
 
-# flake_pool.hpp's allocator calls the sized aligned ::operator delete, which
-# Clang 14 declares only under -fsized-deallocation (GCC: on from C++14). The
-# header is public, so the flag is a usage requirement: PUBLIC, and exported
-# with the installed target, evaluated for the consumer's compiler.
+# The default allocator (ecs/host_memory.cpp) calls the sized aligned
+# ::operator delete, which Clang 14 declares only under -fsized-deallocation
+# (GCC: on from C++14). A usage requirement: PUBLIC, and exported with the
+# installed target, evaluated for the consumer's compiler.
 function(snow_require_sized_deallocation target)
     target_compile_options(${target} PUBLIC
         $<$<COMPILE_LANG_AND_ID:CXX,Clang,AppleClang>:-fsized-deallocation>)

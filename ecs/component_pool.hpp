@@ -3,15 +3,16 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
 
 #include <cstdint>
 #include <utility>
-#include <vector>
 
 namespace snow {
 
-/// Type-erased base so the World can remove every component of a destroyed entity.
-class ComponentPoolBase {
+/// Type-erased base so the World can remove every component of a destroyed
+/// entity; pools live in the host's memory.
+class ComponentPoolBase : public HostAllocated {
   public:
     virtual ~ComponentPoolBase() = default;
     virtual void remove(Entity e) = 0;
@@ -71,14 +72,14 @@ class ComponentPool final : public ComponentPoolBase {
     }
 
     [[nodiscard]] std::size_t size() const override { return dense_.size(); }
-    [[nodiscard]] const std::vector<Entity>& entities() const { return entities_; }
-    [[nodiscard]] std::vector<T>& components() { return dense_; }
-    [[nodiscard]] const std::vector<T>& components() const { return dense_; }
+    [[nodiscard]] const Vector<Entity>& entities() const { return entities_; }
+    [[nodiscard]] Vector<T>& components() { return dense_; }
+    [[nodiscard]] const Vector<T>& components() const { return dense_; }
 
   private:
-    std::vector<std::uint32_t> sparse_;
-    std::vector<Entity> entities_;
-    std::vector<T> dense_;
+    Vector<std::uint32_t> sparse_;
+    Vector<Entity> entities_;
+    Vector<T> dense_;
 };
 
 } // namespace snow

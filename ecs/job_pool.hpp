@@ -4,19 +4,20 @@
 /// a result (the caller cuts the work, <snow/task_system.hpp>).
 #pragma once
 
+#include "ecs/host_memory.hpp"
+
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 #include <snow/task_system.hpp>
 
 namespace snow {
 
-class JobPool final : public TaskSystem {
+class JobPool final : public TaskSystem, public HostAllocated {
   public:
     /// threads >= 1; threads - 1 workers are started, the caller is the last.
     explicit JobPool(unsigned threads = 1);
@@ -33,7 +34,9 @@ class JobPool final : public TaskSystem {
     void worker_loop();
     void drain();
 
-    std::vector<std::thread> workers_;
+    /// The std::thread objects live in the host's memory; the state the C++
+    /// library allocates to start each thread does not (<snow/allocator.hpp>).
+    Vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;

@@ -4,9 +4,9 @@
 
 namespace snow {
 
-void Schedule::add(std::string name, SystemFn fn, std::vector<Requirement> needs) {
-    entries_.push_back(Entry{std::move(fn), std::move(needs)});
-    stats_.push_back(SystemStats{std::move(name)});
+void Schedule::add(std::string_view name, SystemFn fn, std::initializer_list<Requirement> needs) {
+    entries_.push_back(Entry{fn, Vector<Requirement>(needs)});
+    stats_.push_back(SystemStats{String(name)});
 }
 
 bool Schedule::ready(const Entry& e, const World& w) {
@@ -32,16 +32,7 @@ void Schedule::run(World& world) {
     }
 }
 
-std::vector<std::string> Schedule::names() const {
-    std::vector<std::string> out;
-    out.reserve(stats_.size());
-    for (const auto& s : stats_) {
-        out.push_back(s.name);
-    }
-    return out;
-}
-
-bool Schedule::would_run(const std::string& name, const World& world) const {
+bool Schedule::would_run(std::string_view name, const World& world) const {
     for (std::size_t i = 0; i < stats_.size(); ++i) {
         if (stats_[i].name == name) {
             return ready(entries_[i], world);

@@ -5,13 +5,12 @@
 #include "ecs/component_pool.hpp"
 #include "ecs/entity.hpp"
 #include "ecs/error.hpp"
+#include "ecs/host_memory.hpp"
 #include "ecs/type_id.hpp"
 
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <tuple>
-#include <vector>
 
 namespace snow {
 
@@ -109,7 +108,7 @@ class World {
         if (id >= resources_.size()) {
             resources_.resize(id + 1);
         }
-        resources_[id] = std::make_shared<T>(std::forward<Args>(args)...);
+        resources_[id] = std::allocate_shared<T>(HostAllocator<T>{}, std::forward<Args>(args)...);
         return *static_cast<T*>(resources_[id].get());
     }
     template <typename T>
@@ -170,13 +169,14 @@ class World {
   private:
     void check_alive(Entity e, const char* what) const;
 
-    std::vector<std::uint32_t> generations_;
-    std::vector<std::uint8_t> live_;
-    std::vector<std::uint32_t> free_slots_;
+    Vector<std::uint32_t> generations_;
+    Vector<std::uint8_t> live_;
+    Vector<std::uint32_t> free_slots_;
     std::size_t live_count_ = 0;
-    std::vector<std::unique_ptr<ComponentPoolBase>> pools_;
-    // shared_ptr gives type-erased deletion without a virtual base for resources.
-    std::vector<std::shared_ptr<void>> resources_;
+    Vector<std::unique_ptr<ComponentPoolBase>> pools_; // HostAllocated
+    // shared_ptr gives type-erased deletion without a virtual base for resources;
+    // allocate_shared puts the object and its count in the host's memory.
+    Vector<std::shared_ptr<void>> resources_;
 };
 
 } // namespace snow

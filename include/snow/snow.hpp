@@ -4,6 +4,7 @@
 /// through its validated calls, step it at a fixed dt (FixedStep turns host
 /// frames into ticks), read it back through views (<snow/views.hpp>), save
 /// and load it as bytes. Everything it throws is a snow::SimulationError.
+/// Its memory comes from the host's allocator (<snow/allocator.hpp>).
 /// Self-contained: the standard library and GLM only. See docs/embedding.md.
 #pragma once
 
@@ -16,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include <snow/allocator.hpp>
 #include <snow/defs.hpp>
 #include <snow/error.hpp>
 #include <snow/task_system.hpp>

@@ -23,7 +23,7 @@ bool flakes_alive(const World& w) {
 /// The T of entity `e`; throws SimulationError naming `field` when `e` is
 /// stale, null or has no T (`kind` says what it should have been).
 template <typename T, typename W>
-auto& component_of(W& world, Entity e, const std::string& field, const char* kind) {
+auto& component_of(W& world, Entity e, const char* field, const char* kind) {
     auto* c = world.alive(e) ? world.template try_get<T>(e) : nullptr;
     if (c == nullptr) {
         throw SimulationError(field, std::string("is not a living ") + kind);
@@ -54,7 +54,7 @@ void remove_entity(World& world, Entity e, const char* field, const char* kind,
         ++versions.solids;
     }
     // Surfaces lying on a removed solid go with it; their snow leaves the books as removed.
-    std::vector<Entity> doomed{e};
+    Vector<Entity> doomed{e};
     world.each<SurfaceOf>([&](Entity s, const SurfaceOf& of) {
         if (of.owner == e) {
             doomed.push_back(s);
@@ -140,6 +140,7 @@ Simulation::Simulation(const SimConfig& config) : impl_(std::make_unique<Impl>()
     }
     world.set_resource<Jobs>(Jobs{tasks});
     impl_->build_schedule();
+    impl_->prepare();
 }
 
 Simulation::~Simulation() = default;
@@ -160,6 +161,18 @@ void Simulation::Impl::build_schedule() {
     schedule.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule.add("spill", spill_system, {needs<SnowSurface>()});
     schedule.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
+}
+
+void Simulation::Impl::prepare() {
+    // In tick order: later ones read what earlier ones built (the collider grid).
+    prepare_cover(world);
+    prepare_flake_order(world);
+    prepare_wind_field(world);
+    prepare_flake_pass(world);
+    prepare_carve(world);
+    prepare_wind_transport(world);
+    prepare_redistribute(world);
+    prepare_occlusion(world);
 }
 
 EmitterId Simulation::add_emitter(const Emitter& e) {
@@ -196,6 +209,7 @@ void Simulation::set_wind_field(const WindFieldDef& def) {
     impl_->world.set_resource<WindField>(std::move(f));
     impl_->world.erase_resource<WindFieldSolver>();     // obstacles are marked for the new grid
     impl_->world.resource<FlakePool>().hold_wind(true); // every flake samples the new field
+    impl_->prepare();
 }
 
 void Simulation::set_wind_transport(const WindTransportDef& def) {
@@ -205,6 +219,7 @@ void Simulation::set_wind_transport(const WindTransportDef& def) {
         throw SimulationError("set_wind_transport", "needs a wind field (set_wind_field first)");
     }
     f->transport = def;
+    impl_->prepare();
 }
 
 void Simulation::clear_wind_transport() {
@@ -232,6 +247,7 @@ SurfaceId Simulation::add_surface(const SurfaceDef& def, ColliderId owner_id) {
         impl_->world.add<SnowHolder>(owner);
     }
     ++impl_->world.resource<SourceVersions>().surfaces;
+    impl_->prepare();
     return id_of<SurfaceId>(id);
 }
 
@@ -243,6 +259,7 @@ CoverId Simulation::add_cover(const CoverDef& def) {
     cover.drop_limit = def.drop_limit;
     impl_->world.add<SnowCover>(id, std::move(cover));
     ++impl_->world.resource<SourceVersions>().surfaces;
+    impl_->prepare();
     return id_of<CoverId>(id);
 }
 
@@ -250,6 +267,7 @@ BodyId Simulation::add_body(const BodyDef& def) {
     throw_if(validate(def));
     const Entity id = impl_->world.create();
     impl_->world.add<Body>(id, make_body(def));
+    impl_->prepare();
     return id_of<BodyId>(id);
 }
 
@@ -278,7 +296,7 @@ void Simulation::set_body_motion(BodyId body, const BodyMotion& motion) {
     const Entity e = entity_of(body);
     throw_if(validate(motion));
     Body& b = component_of<Body>(impl_->world, e, "set_body_motion(body)", "body");
-    b.motion = motion;
+    b.motion = body_path(motion);
     b.segment = 0;
     b.along = 0.0f;
 }
@@ -317,6 +335,7 @@ ColliderId Simulation::add_box(const Aabb& box) {
     const Entity id = impl_->world.create();
     impl_->world.add<BoxCollider>(id, BoxCollider{box});
     ++impl_->world.resource<SourceVersions>().solids;
+    impl_->prepare();
     return id_of<ColliderId>(id);
 }
 
@@ -331,6 +350,7 @@ void Simulation::move_box(ColliderId box_id, const Aabb& box) {
     throw_if(validate(box));
     c.box = box;
     ++impl_->world.resource<SourceVersions>().solids;
+    impl_->prepare();
 }
 
 ColliderId Simulation::add_sphere(const glm::vec3& center, float radius) {
@@ -341,6 +361,7 @@ ColliderId Simulation::add_sphere(const glm::vec3& center, float radius) {
     const Entity id = impl_->world.create();
     impl_->world.add<SphereCollider>(id, SphereCollider{center, radius});
     ++impl_->world.resource<SourceVersions>().solids;
+    impl_->prepare();
     return id_of<ColliderId>(id);
 }
 
@@ -350,12 +371,12 @@ ColliderId Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
         check::fail(e, "mesh.triangles (vertex count)", "a positive multiple of 3",
                     static_cast<double>(triangles.size()));
     }
-    for (std::size_t i = 0; i < triangles.size() && e.empty(); ++i) {
-        check::finite3(e, "mesh.triangles[" + std::to_string(i) + "]", triangles[i]);
-    }
+    check::finite_each(e, "mesh.triangles", triangles);
     throw_if(e);
     const Entity id = impl_->world.create();
-    impl_->world.add<MeshCollider>(id, MeshCollider{std::move(triangles)});
+    // The host's vector is copied into the host allocator's memory.
+    impl_->world.add<MeshCollider>(
+        id, MeshCollider{Vector<glm::vec3>(triangles.begin(), triangles.end())});
     // Flakes meet meshes only through the sky map [SKY]: a mesh needs one.
     auto& versions = impl_->world.resource<SourceVersions>();
     if (!impl_->world.has_resource<OcclusionCamera>()) {
@@ -363,6 +384,7 @@ ColliderId Simulation::add_mesh_collider(std::vector<glm::vec3> triangles) {
         ++versions.occlusion;
     }
     ++versions.solids;
+    impl_->prepare();
     return id_of<ColliderId>(id);
 }
 
@@ -370,29 +392,35 @@ void Simulation::set_occlusion(const OcclusionCamera& cam) {
     throw_if(validate(cam));
     impl_->world.set_resource<OcclusionCamera>(cam);
     ++impl_->world.resource<SourceVersions>().occlusion;
+    impl_->prepare();
 }
 
 void Simulation::remove(EmitterId emitter) {
     remove_entity(impl_->world, entity_of(emitter), "remove(emitter)", "emitter",
                   has_component<Emitter>);
+    impl_->prepare();
 }
 
 void Simulation::remove(SurfaceId surface) {
     remove_entity(impl_->world, entity_of(surface), "remove(surface)", "snow surface",
                   has_component<SurfaceOf>);
+    impl_->prepare();
 }
 
 void Simulation::remove(CoverId cover) {
     remove_entity(impl_->world, entity_of(cover), "remove(cover)", "snow cover",
                   has_component<SnowCover>);
+    impl_->prepare();
 }
 
 void Simulation::remove(BodyId body) {
     remove_entity(impl_->world, entity_of(body), "remove(body)", "body", has_component<Body>);
+    impl_->prepare();
 }
 
 void Simulation::remove(ColliderId collider) {
     remove_entity(impl_->world, entity_of(collider), "remove(collider)", "collider", is_collider);
+    impl_->prepare();
 }
 
 std::optional<std::uint32_t> Simulation::place_flake(const FlakeSpec& flake) {

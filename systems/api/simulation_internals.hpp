@@ -26,7 +26,8 @@
 
 namespace snow {
 
-struct Simulation::Impl {
+/// Made with new, in the host's memory (HostAllocated), as all it holds.
+struct Simulation::Impl : HostAllocated {
     World world;
     Schedule schedule;
     std::unique_ptr<JobPool> jobs; ///< the built-in pool, when the host gave no task system
@@ -41,6 +42,10 @@ struct Simulation::Impl {
     SourceDigest sources_digest;
 
     void build_schedule();
+    /// Readies every system's ticks for the scene as it stands (the
+    /// prepare_* of systems.hpp): no tick allocates. Called by each call that
+    /// changes the scene's sources or state.
+    void prepare();
     /// A digest of the settings and the source data (docs/design.md): a
     /// byte snapshot loads only where it matches.
     [[nodiscard]] std::uint64_t scene_fingerprint() const;

@@ -17,7 +17,6 @@
 #include <span>
 #include <string>
 #include <utility>
-#include <vector>
 
 namespace snow {
 
@@ -74,16 +73,15 @@ std::uint64_t source_digest(const World& w) {
 /// Throws, before restore_snapshot() changes anything, unless the world holds a
 /// component T on exactly the entities the snapshot saved one for.
 template <typename T>
-void same_entities(const World& w, const std::vector<std::pair<Entity, T>>& saved,
-                   const std::string& what) {
+void same_entities(const World& w, const Vector<std::pair<Entity, T>>& saved, const char* what) {
     if (saved.size() != w.count<T>()) {
-        throw SimulationError("restore: snapshot belongs to a different scene (" + what +
-                              " count)");
+        throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
+                              what + " count)");
     }
     for (const auto& [e, component] : saved) {
         if (!w.has<T>(e)) {
-            throw SimulationError("restore: snapshot belongs to a different scene (" + what +
-                                  " missing)");
+            throw SimulationError(std::string("restore: snapshot belongs to a different scene (") +
+                                  what + " missing)");
         }
     }
 }
@@ -226,6 +224,7 @@ void restore_snapshot(Simulation& sim, const Snapshot& s) {
     for (const auto& [e, body] : s.bodies) {
         world.get<Body>(e) = body;
     }
+    InternalAccess::impl(sim).prepare(); // the restored arrays may have less room
 }
 
 } // namespace snow

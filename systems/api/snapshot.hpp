@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
 #include "systems/bodies/body.hpp"
 #include "systems/core/mass_ledger.hpp"
 #include "systems/core/sim_config.hpp"
@@ -16,14 +17,14 @@
 
 #include <optional>
 #include <utility>
-#include <vector>
 
 namespace snow {
 
 /// Everything a tick can change. Geometry and settings are not included: a
 /// snapshot restores onto the same scene it was taken from. Caches are not
 /// included either: they rebuild from their sources (source_versions.hpp).
-struct Snapshot {
+/// save_snapshot() makes one with new: in the host's memory, like its arrays.
+struct Snapshot : HostAllocated {
     FlakePool flakes;
     SimClock clock;
     MassLedger ledger;
@@ -32,11 +33,11 @@ struct Snapshot {
     std::optional<WindField> wind_field; ///< the whole field: state and what derives from it
     std::optional<OcclusionMap> sky_map; ///< absent while no map was ever built
     /// Snow, compaction and pending smoothing of every surface, by entity.
-    std::vector<std::pair<Entity, SnowSurface>> surfaces;
+    Vector<std::pair<Entity, SnowSurface>> surfaces;
     /// What each cover's base was built from and its drop cells, by entity.
-    std::vector<std::pair<Entity, SnowCover>> covers;
+    Vector<std::pair<Entity, SnowCover>> covers;
     /// Pose, path progress and carried snow of every body, by entity.
-    std::vector<std::pair<Entity, Body>> bodies;
+    Vector<std::pair<Entity, Body>> bodies;
 };
 
 } // namespace snow

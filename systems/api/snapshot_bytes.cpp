@@ -47,13 +47,13 @@ std::uint64_t checksum(std::span<const std::byte> bytes) {
 /// gives the item its scene settings before `load` reads its state).
 template <typename T, typename Load>
 void load_each(ByteReader& in, const World& world, const char* what,
-               std::vector<std::pair<Entity, T>>& items, const Load& load) {
+               Vector<std::pair<Entity, T>>& items, const Load& load) {
     in.record(what);
     std::uint64_t n = 0;
     in(n);
     in.require(n == world.count<T>(), "has another number of them than the scene");
     for (std::uint64_t k = 0; k < n; ++k) {
-        in.record(std::string(what) + "[" + std::to_string(k) + "]");
+        in.record(what, k);
         Entity e;
         in(e.bits);
         const T* now = world.alive(e) ? world.try_get<T>(e) : nullptr;
@@ -96,7 +96,7 @@ std::vector<std::byte> Simulation::save_bytes() const {
     write_each<SnowSurface>(out, world);
     write_each<SnowCover>(out, world);
     write_each<Body>(out, world);
-    std::vector<std::byte>& bytes = out.bytes();
+    std::vector<std::byte>& bytes = out.bytes(); // the host's: allocated as it allocates
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
     out(checksum(bytes));

@@ -29,4 +29,18 @@ void redistribute_system(World& w); ///< redistribute_system.cpp: Laplacian cap 
 void spill_system(World& w);        ///< spill_system.cpp: edge overflow to lower surfaces
 void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map [SKY]
 
+// Each prepare makes what its system's ticks need for the scene as it stands:
+// caches of the sources built, buffers with room for the most a tick can
+// write, so that no tick allocates (<snow/allocator.hpp>). The Simulation
+// calls them after each call that changes the scene; each system calls its
+// own first (a no-op then, but a world changed behind the facade still runs).
+void prepare_cover(World& w);          ///< snow_cover.cpp: a rebuild's buffers
+void prepare_flake_order(World& w);    ///< flake_order.cpp: the held winds' spare buffer
+void prepare_wind_field(World& w);     ///< wind_field_system.cpp: the solver's arrays
+void prepare_flake_pass(World& w);     ///< flake_pass_system.cpp: the three stages' buffers
+void prepare_carve(World& w);          ///< carve_system.cpp: a footprint on the largest surface
+void prepare_wind_transport(World& w); ///< wind_transport_system.cpp: moves, windy columns
+void prepare_redistribute(World& w);   ///< redistribute_system.cpp: the largest surface's steps
+void prepare_occlusion(World& w);      ///< occlusion.cpp: the map's texels
+
 } // namespace snow

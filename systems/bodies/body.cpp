@@ -49,8 +49,13 @@ Body make_body(const BodyDef& d) {
     b.snowball = d.snowball;
     b.compaction = d.compaction;
     b.position = b.previous = d.position;
-    b.motion = d.motion;
+    b.motion = body_path(d.motion);
     return b;
+}
+
+BodyPath body_path(const BodyMotion& motion) {
+    return {Vector<glm::vec3>(motion.waypoints.begin(), motion.waypoints.end()), motion.speed,
+            motion.loop};
 }
 
 float snowball_radius(float bare_radius, std::uint64_t units) {
@@ -113,9 +118,7 @@ Invalid validate(const BodyMotion& m) {
     if (m.waypoints.empty()) {
         e = {"motion.waypoints", "must hold at least one point (got none)"};
     }
-    for (std::size_t i = 0; i < m.waypoints.size() && e.empty(); ++i) {
-        check::finite3(e, "motion.waypoints[" + std::to_string(i) + "]", m.waypoints[i]);
-    }
+    check::finite_each(e, "motion.waypoints", m.waypoints);
     check_fields(e, "motion", motion_fields, m);
     return e;
 }

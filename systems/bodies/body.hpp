@@ -5,6 +5,7 @@
 /// rolls over. Every unit they move stays in the ledger.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/core/units.hpp"
@@ -12,11 +13,19 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
-#include <vector>
 
 #include <snow/defs.hpp>
 
 namespace snow {
+
+/// A body's scripted path: its BodyMotion, in the host's memory.
+struct BodyPath {
+    Vector<glm::vec3> waypoints; ///< empty: no path
+    float speed = 1.0f;          ///< m/s along the path
+    bool loop = true;            ///< back to the first waypoint after the last; else stop
+};
+/// The path `motion` describes.
+[[nodiscard]] BodyPath body_path(const BodyMotion& motion);
 
 /// Component. `position` is this tick's, `previous` last tick's: trails and
 /// flake tests sweep between them.
@@ -42,7 +51,7 @@ struct Body {
     glm::vec3 velocity{0.0f}; ///< used when there is no path and no target (m/s)
     bool has_target = false;  ///< move_body() set where it is next tick
     glm::vec3 target{0.0f};
-    BodyMotion motion;
+    BodyPath motion;
     std::uint32_t segment = 0; ///< path: the waypoint it heads from
     float along = 0.0f;        ///< path: metres along that segment
     std::uint64_t carried = 0; ///< snowball: units picked up (ledger bucket `carried`)

@@ -13,17 +13,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace snow {
 
 namespace {
 
-/// World resource: the local cell mask of one body on one surface (reused).
+/// World resource: the local cell mask of one body on one surface (reused),
+/// with room for the largest surface.
 struct CarveScratch {
-    std::vector<std::uint8_t> mask;  ///< 1 footprint, 0 outside
-    std::vector<std::int64_t> floor; ///< footprint: the level the body reaches down to
-    std::vector<std::uint32_t> ring;
+    Vector<std::uint8_t> mask;  ///< 1 footprint, 0 outside
+    Vector<std::int64_t> floor; ///< footprint: the level the body reaches down to
+    Vector<std::uint32_t> ring;
 };
 
 /// The cells of `s` a body may touch this tick: its swept footprint's
@@ -195,11 +195,27 @@ void raise_rims(SnowSurface& s, const CarveScratch& scratch, std::uint64_t units
 
 } // namespace
 
-void carve_system(World& w) {
+void prepare_carve(World& w) {
+    if (w.count<Body>() == 0 || w.count<SnowSurface>() == 0) {
+        return;
+    }
     auto* scratch = w.try_resource<CarveScratch>();
     if (scratch == nullptr) {
         scratch = &w.set_resource<CarveScratch>();
     }
+    // A body's window is clamped to the grid, however far it moves in a tick.
+    std::size_t largest = 0;
+    for (const SnowSurface& s : w.pool<SnowSurface>().components()) {
+        largest = std::max(largest, s.cell_count());
+    }
+    scratch->mask.reserve(largest);
+    scratch->floor.reserve(largest);
+    scratch->ring.reserve(largest);
+}
+
+void carve_system(World& w) {
+    prepare_carve(w);
+    CarveScratch* scratch = &w.resource<CarveScratch>();
     auto& counters = w.resource<SimCounters>();
     for (Body& b : w.pool<Body>().components()) {
         for (SnowSurface& s : w.pool<SnowSurface>().components()) {

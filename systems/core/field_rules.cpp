@@ -27,9 +27,11 @@ std::string joined(std::string_view prefix, std::string_view name) {
     return s;
 }
 
-void record(Invalid& err, std::string field, std::string problem) {
+/// Records `problem` of field "prefix.name" while `err` holds none; the
+/// name is joined only then.
+void record(Invalid& err, std::string_view prefix, std::string_view name, std::string problem) {
     if (err.empty() && !problem.empty()) {
-        err = {std::move(field), std::move(problem)};
+        err = {joined(prefix, name), std::move(problem)};
     }
 }
 
@@ -62,14 +64,14 @@ std::string range_problem(const Range& r, double v) {
 void check_field(Invalid& err, std::string_view prefix, std::string_view name, const Range& r,
                  float v) {
     if (err.empty()) {
-        record(err, joined(prefix, name), problem_in(r, v));
+        record(err, prefix, name, problem_in(r, v));
     }
 }
 
 void check_field(Invalid& err, std::string_view prefix, std::string_view name, const Range& r,
                  std::uint64_t v) {
     if (err.empty()) {
-        record(err, joined(prefix, name), range_problem(r, static_cast<double>(v)));
+        record(err, prefix, name, range_problem(r, static_cast<double>(v)));
     }
 }
 
@@ -87,18 +89,29 @@ void check_field(Invalid& err, std::string_view prefix, std::string_view name, c
 
 namespace snow::check {
 
-void fail(Invalid& err, const std::string& field, const std::string& rule, double v) {
-    record(err, field, "must be " + rule + " (got " + number_text(v) + ")");
+void fail(Invalid& err, std::string_view field, const std::string& rule, double v) {
+    record(err, "", field, "must be " + rule + " (got " + number_text(v) + ")");
 }
 
-void number(Invalid& err, const std::string& field, const Range& r, double v) {
+void number(Invalid& err, std::string_view field, const Range& r, double v) {
     if (err.empty()) {
-        record(err, field, range_problem(r, v));
+        record(err, "", field, range_problem(r, v));
     }
 }
 
-void finite3(Invalid& err, const std::string& field, const glm::vec3& v) {
+void finite3(Invalid& err, std::string_view field, const glm::vec3& v) {
     check_field(err, "", field, {}, v);
+}
+
+void finite_each(Invalid& err, std::string_view field, std::span<const glm::vec3> points) {
+    for (std::size_t i = 0; i < points.size() && err.empty(); ++i) {
+        const glm::vec3& v = points[i];
+        if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
+            std::string name(field);
+            name.append("[").append(std::to_string(i)).append("]");
+            finite3(err, name, v);
+        }
+    }
 }
 
 void ordered(Invalid& err, std::string_view prefix, std::string_view lo_name, double lo,

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -119,11 +120,13 @@ template <typename T, std::size_t N>
 namespace snow::check {
 
 /// Records "field must be <rule> (got v)".
-void fail(Invalid& err, const std::string& field, const std::string& rule, double v);
+void fail(Invalid& err, std::string_view field, const std::string& rule, double v);
 /// Records the problem of `v` under `r`.
-void number(Invalid& err, const std::string& field, const Range& r, double v);
+void number(Invalid& err, std::string_view field, const Range& r, double v);
 /// Each component finite ("field.x", ...).
-void finite3(Invalid& err, const std::string& field, const glm::vec3& v);
+void finite3(Invalid& err, std::string_view field, const glm::vec3& v);
+/// Each point finite ("field[i].x", ...; the name is made only for the point at fault).
+void finite_each(Invalid& err, std::string_view field, std::span<const glm::vec3> points);
 /// prefix.hi >= prefix.lo (> when `strict`); skipped while either is not finite.
 void ordered(Invalid& err, std::string_view prefix, std::string_view lo_name, double lo,
              std::string_view hi_name, double hi, bool strict = false);

@@ -151,7 +151,11 @@ class ByteReader {
     }
     template <ByteScalar T>
     requires(!std::is_same_v<T, bool>) void block(T* p, std::size_t n) { take(p, n * sizeof(T)); }
-    void record(const std::string& name) { record_ = name; }
+    /// Names the record read next in errors: `name`, or `name[index]`.
+    void record(const char* name, std::optional<std::uint64_t> index = {}) {
+        record_ = name;
+        index_ = index;
+    }
 
     /// Throws unless `ok`, naming the record and `problem`.
     void require(bool ok, const char* problem) const {
@@ -168,7 +172,14 @@ class ByteReader {
     }
     [[nodiscard]] std::size_t left() const { return bytes_.size() - at_; }
     [[noreturn]] void fail(const std::string& problem) const {
-        throw SimulationError("snapshot" + (record_.empty() ? "" : "." + record_), problem);
+        std::string field = "snapshot";
+        if (*record_ != '\0') {
+            field.append(".").append(record_);
+        }
+        if (index_) {
+            field.append("[").append(std::to_string(*index_)).append("]");
+        }
+        throw SimulationError(field, problem);
     }
 
   private:
@@ -183,7 +194,9 @@ class ByteReader {
     }
     std::span<const std::byte> bytes_;
     std::size_t at_ = 0;
-    std::string record_;
+    // The name of the record, formatted only when an error needs it.
+    const char* record_ = "";
+    std::optional<std::uint64_t> index_;
 };
 
 /// True when every value is finite (a state array a run could have produced).

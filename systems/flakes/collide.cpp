@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace snow {
 
@@ -42,16 +41,16 @@ constexpr std::uint32_t block_shift = 3;
 /// (cache-missing) texel lookup (rebuilt from the map's version and
 /// SourceVersions::solids).
 struct CollideScratch {
-    std::vector<std::uint32_t> slots;
-    std::vector<Removal> reasons;
-    std::vector<std::uint32_t> units;  ///< per removal: the flake's mass, read in its block
-    std::vector<std::uint32_t> counts; ///< removals listed per chunk so far
-    std::vector<const SnowSurface*> surfaces;
-    std::vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
+    Vector<std::uint32_t> slots;
+    Vector<Removal> reasons;
+    Vector<std::uint32_t> units;  ///< per removal: the flake's mass, read in its block
+    Vector<std::uint32_t> counts; ///< removals listed per chunk so far
+    Vector<const SnowSurface*> surfaces;
+    Vector<const SnowSurface*> covers; ///< the cover surfaces, pool order
     bool surfaces_built = false;
     std::uint64_t surfaces_solids_version = 0;
     std::uint64_t surfaces_version = 0;
-    std::vector<float> mesh_block_top;
+    Vector<float> mesh_block_top;
     std::uint32_t blocks_x = 0;
     bool blocks_built = false;
     std::uint64_t blocks_map_version = 0;
@@ -59,12 +58,12 @@ struct CollideScratch {
     /// The flake pass's prefilter table (ColliderGrid::cell_reach raised to
     /// the deposit bins' tops, collide_share_flags), rebuilt from the grid's
     /// versions and the bins' tops_version.
-    std::vector<float> shared_reach;
-    std::vector<float> shared_row_reach;    ///< row_tops() of shared_reach
-    std::vector<std::uint32_t> bin_columns; ///< per grid column: its first and last bin column
+    Vector<float> shared_reach;
+    Vector<float> shared_row_reach;    ///< row_tops() of shared_reach
+    Vector<std::uint32_t> bin_columns; ///< per grid column: its first and last bin column
     /// Per block of the pool: its prefilter needed the per-flake table last
     /// tick (flag_block), so it goes straight there; a choice of speed only.
-    std::vector<std::uint8_t> exact_block;
+    Vector<std::uint8_t> exact_block;
     bool shared_built = false;
     std::uint64_t shared_solids_version = 0;
     std::uint64_t shared_surfaces_version = 0;
@@ -568,14 +567,28 @@ std::span<const std::uint32_t> collide_block(const CollideTick& t, std::size_t c
 
 namespace {
 
+/// Blocks of the mesh-top summary along `texels` of the map.
+std::uint32_t blocks_along(std::uint32_t texels) {
+    return (texels + (1u << block_shift) - 1) >> block_shift;
+}
+
 void update_scratch(World& w, CollideScratch* s, const FlakePool& pool, const ColliderGrid& grid,
                     const SourceVersions& versions) {
-    // Sizes change only with the pool capacity: no steady-tick allocation.
+    // Sizes change only with the pool capacity.
     s->slots.resize(pool.capacity());
     s->reasons.resize(pool.capacity());
     s->units.resize(pool.capacity());
     s->counts.resize(chunk_count(pool.capacity(), flake_grain));
     s->exact_block.resize(pool.capacity() / flake_block + 1);
+    // Room for the tables a tick rebuilds later: the mesh tops per block of
+    // the camera's map, and the flake pass's shared prefilter (collide_share_flags).
+    if (const auto* cam = w.try_resource<OcclusionCamera>()) {
+        const OcclusionGrid map = occlusion_grid(w, *cam);
+        s->mesh_block_top.reserve(std::size_t{blocks_along(map.width)} * blocks_along(map.height));
+    }
+    s->shared_reach.reserve(2 * static_cast<std::size_t>(grid.nx) * grid.nz);
+    s->shared_row_reach.reserve(grid.nz);
+    s->bin_columns.reserve(2 * std::size_t{grid.nx});
     // Surfaces (covers too) move in memory only when one is added or removed;
     // the grid's list of them changes order only with the solids and the surfaces.
     if (!s->surfaces_built || s->surfaces_solids_version != versions.solids ||
@@ -603,9 +616,8 @@ void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const Collid
         s.blocks_solids_version == versions.solids) {
         return;
     }
-    const std::uint32_t block = 1u << block_shift;
-    s.blocks_x = (map.width + block - 1) >> block_shift;
-    const std::uint32_t blocks_z = (map.height + block - 1) >> block_shift;
+    s.blocks_x = blocks_along(map.width);
+    const std::uint32_t blocks_z = blocks_along(map.height);
     s.mesh_block_top.assign(static_cast<std::size_t>(s.blocks_x) * blocks_z,
                             -std::numeric_limits<float>::infinity());
     for (std::uint32_t j = 0; j < map.height; ++j) {
@@ -622,18 +634,29 @@ void update_mesh_blocks(CollideScratch& s, const OcclusionMap& map, const Collid
     s.blocks_built = true;
 }
 
+/// The world's CollideTick (made when missing) with its scratch sized for `grid`.
+CollideTick& collide_tick(World& w, const ColliderGrid& grid) {
+    auto* t = w.try_resource<CollideTick>();
+    if (t == nullptr) {
+        t = &w.set_resource<CollideTick>();
+    }
+    update_scratch(w, &t->scratch, w.resource<FlakePool>(), grid, source_versions(w));
+    return *t;
+}
+
 } // namespace
+
+void prepare_collide(World& w) {
+    reserve_collider_grid(w);
+    collide_tick(w, w.resource<ColliderGrid>());
+}
 
 CollideTick& collide_begin(World& w) {
     FlakePool& pool = w.resource<FlakePool>();
     const SourceVersions versions = source_versions(w);
     const ColliderGrid& grid = update_collider_grid(w);
-    auto* t = w.try_resource<CollideTick>();
-    if (t == nullptr) {
-        t = &w.set_resource<CollideTick>();
-    }
+    CollideTick* t = &collide_tick(w, grid);
     CollideScratch& scratch = t->scratch;
-    update_scratch(w, &scratch, pool, grid, versions);
     std::fill(scratch.counts.begin(), scratch.counts.end(), 0u);
 
     Context& c = t->context;

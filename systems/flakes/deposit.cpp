@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace snow {
 
@@ -45,14 +44,14 @@ struct LandingRecord {
 } // namespace
 
 /// World resource: the prefilter bins, one landing buffer per chunk of
-/// flake_grain slots (reserved once, cleared every tick), and what a
-/// detection block reads this tick.
+/// flake_grain slots (room for every slot of it, cleared every tick), and
+/// what a detection block reads this tick.
 struct DepositTick {
     DepositBins bins;
-    mutable std::vector<std::vector<LandingRecord>> chunks; ///< each written by its chunk's blocks
+    mutable Vector<Vector<LandingRecord>> chunks; ///< each written by its chunk's blocks
     /// Per chunk: the slots its bin test passed this tick (each written by
     /// its chunk's blocks).
-    mutable std::vector<std::uint32_t> passed;
+    mutable Vector<std::uint32_t> passed;
     std::uint64_t scanned = 0; ///< slots this tick's blocks cover
     /// Last tick's bin test passed at most 1 slot in sparse_share: the pass
     /// then shares collide's prefilter (every flake it lists costs a second
@@ -63,8 +62,8 @@ struct DepositTick {
     std::uint64_t seed = 0;
     std::uint64_t tick = 0;
     /// deposit_end's: per surface, per dirty tile, the last application
-    /// (`applied`) that added snow to one of its cells.
-    mutable std::vector<std::vector<std::uint64_t>> touched;
+    /// (`applied`) that added snow to one of its cells (sized by prepare_deposit).
+    mutable Vector<Vector<std::uint64_t>> touched;
     mutable std::uint64_t applied = 0;
 };
 
@@ -225,7 +224,7 @@ void deposit_list(const DepositTick& p, std::size_t chunk, const PathStarts& st,
 /// flake parked.
 void deposit_land(const DepositTick& p, std::size_t chunk, const PathStarts& st,
                   const DepositCandidates& listed) {
-    std::vector<LandingRecord>& out = p.chunks[chunk];
+    Vector<LandingRecord>& out = p.chunks[chunk];
     for (std::size_t k = 0; k < listed.count; ++k) {
         const std::uint32_t slot = listed.slots[k];
         LandingRecord rec{slot, 0, 0, 0, p.pool->mass_units[slot], 0};
@@ -257,8 +256,8 @@ constexpr std::size_t landing_lookahead = 8;
 /// holds cell c or one of its neighbours (the cells roll_target reads), so
 /// the target the pass found may be stale. Tiles, not cells: the stamps stay
 /// in cache; a stale-looking target is only recomputed.
-bool changed_near(const SnowSurface& s, const std::vector<std::uint64_t>& touched,
-                  std::uint64_t first, std::size_t c) {
+bool changed_near(const SnowSurface& s, const Vector<std::uint64_t>& touched, std::uint64_t first,
+                  std::size_t c) {
     const auto ix = static_cast<std::uint32_t>(c % s.nx);
     const auto iz = static_cast<std::uint32_t>(c / s.nx);
     const std::uint32_t x0 = ix > 0 ? ix - 1 : 0, x1 = std::min(ix + 1, s.nx - 1);
@@ -274,24 +273,39 @@ bool changed_near(const SnowSurface& s, const std::vector<std::uint64_t>& touche
 
 } // namespace
 
-DepositTick* deposit_begin(World& w) {
-    auto& surfaces = w.pool<SnowSurface>().components();
-    auto& pool = w.resource<FlakePool>();
-    if (surfaces.empty() || pool.alive == 0) {
+DepositTick* prepare_deposit(World& w) {
+    auto* surface_pool = w.find_pool<SnowSurface>();
+    if (surface_pool == nullptr || surface_pool->size() == 0) {
         return nullptr;
     }
+    const auto& surfaces = surface_pool->components();
+    const std::size_t capacity = w.resource<FlakePool>().capacity();
     auto* d = w.try_resource<DepositTick>();
     if (d == nullptr) {
         d = &w.set_resource<DepositTick>();
     }
     update_deposit_bins(d->bins, surfaces, source_versions(w).surfaces);
-    // Buffers for the whole pool (allocated once); work only up to slot_end.
-    const std::size_t chunks = chunk_count(pool.capacity(), flake_grain);
-    if (d->chunks.size() != chunks) {
-        d->chunks.resize(chunks);
-        for (auto& c : d->chunks) {
-            c.reserve(256);
-        }
+    // Buffers for the whole pool; work only up to slot_end. Each chunk has
+    // room for all its slots to land in one tick.
+    const std::size_t chunks = chunk_count(capacity, flake_grain);
+    d->chunks.resize(chunks);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        d->chunks[c].reserve(std::min(flake_grain, capacity - c * flake_grain));
+    }
+    d->passed.resize(chunks);
+    d->touched.resize(surfaces.size());
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const SnowSurface& s = surfaces[i];
+        d->touched[i].resize(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), d->applied);
+    }
+    return d;
+}
+
+DepositTick* deposit_begin(World& w) {
+    auto& pool = w.resource<FlakePool>();
+    DepositTick* d = pool.alive > 0 ? prepare_deposit(w) : nullptr;
+    if (d == nullptr) {
+        return nullptr;
     }
     for (auto& c : d->chunks) {
         c.clear();
@@ -303,10 +317,10 @@ DepositTick* deposit_begin(World& w) {
         passed += n;
     }
     d->sparse = d->scanned > 0 && passed * sparse_share <= d->scanned;
-    d->passed.assign(chunks, 0);
+    std::fill(d->passed.begin(), d->passed.end(), 0u);
     d->scanned = pool.slot_end;
     d->pool = &pool;
-    d->surfaces = surfaces.data();
+    d->surfaces = w.find_pool<SnowSurface>()->components().data();
     d->seed = w.resource<SimConfig>().seed;
     d->tick = w.resource<SimClock>().tick;
     return d;
@@ -316,11 +330,6 @@ void deposit_end(World& w, const DepositTick& d) {
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& pool = w.resource<FlakePool>();
     auto& counters = w.resource<SimCounters>();
-    d.touched.resize(surfaces.size());
-    for (std::size_t i = 0; i < surfaces.size(); ++i) {
-        const SnowSurface& s = surfaces[i];
-        d.touched[i].resize(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), d.applied);
-    }
     const std::uint64_t first = ++d.applied; // every stamp from before is older
     // Apply in chunk order = slot order: later landings see earlier ones' snow.
     for (const auto& chunk : d.chunks) {
@@ -333,7 +342,7 @@ void deposit_end(World& w, const DepositTick& d) {
             }
             const LandingRecord& r = chunk[k];
             SnowSurface& s = surfaces[r.surface];
-            std::vector<std::uint64_t>& touched = d.touched[r.surface];
+            Vector<std::uint64_t>& touched = d.touched[r.surface];
             const std::size_t dst =
                 changed_near(s, touched, first, r.cell)
                     ? roll_target(s, r.cell, {d.seed, d.tick, r.id, random_stream::roll})

@@ -20,7 +20,7 @@ float far_edge(float x0, float cell, std::uint32_t n) {
                               1.0e-6);
 }
 
-void rebuild(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
+void rebuild(DepositBins& d, const Vector<SnowSurface>& surfaces) {
     float ux0 = std::numeric_limits<float>::max(), uz0 = ux0;
     float ux1 = std::numeric_limits<float>::lowest(), uz1 = ux1;
     for (const SnowSurface& s : surfaces) {
@@ -51,18 +51,25 @@ void rebuild(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
             }
         }
     };
-    std::vector<std::uint32_t> count(bins + 1, 0);
+    // Counted, summed, then filled with bin_start[b] as bin b's cursor; the
+    // cursors end one bin on, so the starts are shifted back. No buffer but
+    // the bins' own: a cover's new base rebuilds them inside a tick.
+    Vector<std::uint32_t>& start = d.bin_start;
+    start.assign(bins + 1, 0);
     for (const SnowSurface& s : surfaces) {
-        for_each_bin(s, [&](std::size_t b) { ++count[b + 1]; });
+        for_each_bin(s, [&](std::size_t b) { ++start[b + 1]; });
     }
     for (std::size_t b = 0; b < bins; ++b) {
-        count[b + 1] += count[b];
+        start[b + 1] += start[b];
     }
-    d.bin_start = count;
-    d.bin_items.assign(count[bins], 0);
+    d.bin_items.assign(start[bins], 0);
     for (std::uint32_t i = 0; i < surfaces.size(); ++i) {
-        for_each_bin(surfaces[i], [&](std::size_t b) { d.bin_items[count[b]++] = i; });
+        for_each_bin(surfaces[i], [&](std::size_t b) { d.bin_items[start[b]++] = i; });
     }
+    for (std::size_t b = bins; b > 0; --b) {
+        start[b] = start[b - 1];
+    }
+    start[0] = 0;
     d.bin_top.assign(bins, -std::numeric_limits<float>::infinity());
     d.bounds.assign(surfaces.size(), std::numeric_limits<std::int64_t>::min());
     // Bare tops change only with base_version (part of the key); void cells catch nothing.
@@ -81,7 +88,7 @@ void rebuild(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
 }
 
 /// The bins' surfaces and bare tops are the current ones.
-bool current(const DepositBins& d, const std::vector<SnowSurface>& surfaces,
+bool current(const DepositBins& d, const Vector<SnowSurface>& surfaces,
              std::uint64_t surfaces_version) {
     if (!d.built || d.surfaces_version != surfaces_version ||
         d.base_versions.size() != surfaces.size()) {
@@ -97,7 +104,7 @@ bool current(const DepositBins& d, const std::vector<SnowSurface>& surfaces,
 
 /// Raises bin tops to each surface's level_bound (plus tolerance), and
 /// recomputes floor_top and upper_bare; only when a bound moved.
-void refresh_tops(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
+void refresh_tops(DepositBins& d, const Vector<SnowSurface>& surfaces) {
     bool changed = false;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         changed = changed || d.bounds[i] != surfaces[i].level_bound;
@@ -133,7 +140,7 @@ void refresh_tops(DepositBins& d, const std::vector<SnowSurface>& surfaces) {
 
 } // namespace
 
-void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surfaces,
+void update_deposit_bins(DepositBins& bins, const Vector<SnowSurface>& surfaces,
                          std::uint64_t surfaces_version) {
     if (!current(bins, surfaces, surfaces_version)) {
         rebuild(bins, surfaces);

@@ -7,11 +7,11 @@
 /// follow each surface's level_bound (source_versions.hpp).
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/snowpack/snow_surface.hpp"
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 namespace snow {
 
@@ -63,17 +63,17 @@ struct BinGrid {
 /// another one is, now or at the start of its tick, at or above `upper_bare`.
 struct DepositBins {
     bool built = false;
-    std::uint64_t surfaces_version = 0;       ///< SourceVersions::surfaces it was built from
-    std::vector<std::uint64_t> base_versions; ///< SnowSurface::base_version per surface, the same
-    std::vector<std::int64_t> bounds;         ///< level_bound per surface when bin_top was set
-    std::vector<float> min_bare;              ///< lowest bare top (m) per surface; +inf if all void
+    std::uint64_t surfaces_version = 0;  ///< SourceVersions::surfaces it was built from
+    Vector<std::uint64_t> base_versions; ///< SnowSurface::base_version per surface, the same
+    Vector<std::int64_t> bounds;         ///< level_bound per surface when bin_top was set
+    Vector<float> min_bare;              ///< lowest bare top (m) per surface; +inf if all void
     float floor_top = 0.0f;  ///< max over bins: highest y landing on the bin's lowest surface
     float upper_bare = 0.0f; ///< min over bins: lowest bare top of the others, less tolerance
     BinGrid grid;
-    std::vector<float> bin_top;           ///< -inf where no surface
-    std::uint64_t tops_version = 0;       ///< counts the changes of bin_top
-    std::vector<std::uint32_t> bin_start; ///< bin b lists bin_items[bin_start[b], bin_start[b+1])
-    std::vector<std::uint32_t> bin_items; ///< surface indices, ascending
+    Vector<float> bin_top;           ///< -inf where no surface
+    std::uint64_t tops_version = 0;  ///< counts the changes of bin_top
+    Vector<std::uint32_t> bin_start; ///< bin b lists bin_items[bin_start[b], bin_start[b+1])
+    Vector<std::uint32_t> bin_items; ///< surface indices, ascending
 
     /// False when a flake at y (y_start at the start of its tick) can land on
     /// no surface: above every bin's lowest surface and below every other
@@ -86,7 +86,7 @@ struct DepositBins {
 /// Brings the bins up to date with the surfaces (pool order) of version
 /// `surfaces_version`: rebuilt when that or a base_version changed, bin tops
 /// raised when a level_bound moved.
-void update_deposit_bins(DepositBins& bins, const std::vector<SnowSurface>& surfaces,
+void update_deposit_bins(DepositBins& bins, const Vector<SnowSurface>& surfaces,
                          std::uint64_t surfaces_version);
 
 /// flags[j] = 1 where the flake at (px[j], py[j], pz[j]) is over a bin and

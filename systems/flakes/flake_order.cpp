@@ -58,7 +58,7 @@ void slot_keys(const float* __restrict px, const float* __restrict pz,
 /// other slots up to its dirty end are then set to `free` (the pool's free
 /// slots hold what release() and reset() leave); then the two trade buffers.
 template <typename T>
-void permute(PoolArray<T>& a, SpareArray<T>& spare, const std::vector<std::uint32_t>& source,
+void permute(PoolArray<T>& a, SpareArray<T>& spare, const Vector<std::uint32_t>& source,
              std::uint32_t end, std::uint32_t alive, T free) {
     T* __restrict out = spare.buffer.data();
     const T* __restrict in = a.data();
@@ -88,10 +88,20 @@ void FlakeOrder::reset(std::uint32_t capacity) {
     held = {};
 }
 
+void prepare_flake_order(World& w) {
+    const FlakePool& f = w.resource<FlakePool>();
+    FlakeOrder& o = w.resource<FlakeOrder>();
+    if (f.holds_wind() && o.held.buffer.size() != f.capacity()) {
+        o.held.buffer.assign(f.capacity(), held_wind_unset); // once per field
+        o.held.dirty_end = f.capacity();
+    }
+}
+
 void flake_order_system(World& w) {
     if (w.resource<SimClock>().tick % flake_order_every != 0) {
         return;
     }
+    prepare_flake_order(w);
     FlakePool& f = w.resource<FlakePool>();
     FlakeOrder& o = w.resource<FlakeOrder>();
     const Aabb& bounds = w.resource<SimConfig>().bounds;
@@ -135,10 +145,6 @@ void flake_order_system(World& w) {
         }
     });
     const std::uint32_t alive = f.alive;
-    if (f.holds_wind() && o.held.buffer.size() != f.capacity()) {
-        o.held.buffer.assign(f.capacity(), held_wind_unset); // once per field
-        o.held.dirty_end = f.capacity();
-    }
     // Two halves of about equal work, each with its own spare buffers, for
     // the two cores when the pool is large (any split gives the same arrays).
     for_tasks(w, 2, end, [&](std::size_t half) {

@@ -4,10 +4,10 @@
 /// packed into the lowest slots (docs/performance.md "Spatial order").
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/flakes/flake_pool.hpp"
 
 #include <cstdint>
-#include <vector>
 
 namespace snow {
 
@@ -36,15 +36,15 @@ struct SpareArray {
 struct FlakeOrder {
     /// Per key (column or free), for the slots of each half of the pool: the
     /// count, then where the half's next flake of that key goes.
-    std::vector<std::uint32_t> counts[2];
-    std::vector<std::uint32_t> keys;   ///< per slot: its column, or past the last when free
-    std::vector<std::uint32_t> source; ///< per new slot: the slot its flake comes from
+    Vector<std::uint32_t> counts[2];
+    Vector<std::uint32_t> keys;   ///< per slot: its column, or past the last when free
+    Vector<std::uint32_t> source; ///< per new slot: the slot its flake comes from
     /// Where the new order of a pool array is written before the two trade
     /// buffers: for the float arrays but py (free value 0; one per half of
     /// the work, see flake_order_system), for py, and for mass and id.
     SpareArray<float> zeros[2], heights;
     SpareArray<std::uint32_t> words;
-    /// For the held winds; sized at the first ordering with a wind field.
+    /// For the held winds; sized once the pool holds them (prepare_flake_order).
     SpareArray<std::int16_t> held;
     void reset(std::uint32_t capacity);
 };

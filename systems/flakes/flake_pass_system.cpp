@@ -50,6 +50,12 @@ PathStarts stage_path_starts(World& w) {
     return {s->x.data(), s->y.data(), s->z.data(), 0};
 }
 
+void prepare_flake_pass(World& w) {
+    prepare_integrate(w);
+    prepare_collide(w);
+    prepare_deposit(w);
+}
+
 void flake_pass_system(World& w) {
     const IntegrateTick& in = integrate_begin(w);
     CollideTick& co = collide_begin(w);

@@ -5,7 +5,6 @@
 #include "systems/flakes/held_wind.hpp"
 
 #include <algorithm>
-#include <new>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -26,9 +25,9 @@ std::size_t whole_pages(std::size_t bytes) {
 
 void* allocate_pool_array(std::size_t bytes) {
     if (bytes < huge_page) {
-        return ::operator new (bytes, std::align_val_t{cache_line});
+        return host_allocate(bytes, cache_line);
     }
-    void* p = ::operator new (whole_pages(bytes), std::align_val_t{huge_page});
+    void* p = host_allocate(whole_pages(bytes), huge_page);
 #if defined(__linux__)
     (void)madvise(p, whole_pages(bytes), MADV_HUGEPAGE); // refused: 4 KiB pages, same data
 #endif
@@ -37,9 +36,9 @@ void* allocate_pool_array(std::size_t bytes) {
 
 void free_pool_array(void* p, std::size_t bytes) noexcept {
     if (bytes < huge_page) {
-        ::operator delete (p, bytes, std::align_val_t{cache_line});
+        host_free(p, bytes, cache_line);
     } else {
-        ::operator delete (p, whole_pages(bytes), std::align_val_t{huge_page});
+        host_free(p, whole_pages(bytes), huge_page);
     }
 }
 
@@ -116,7 +115,7 @@ void slot_arrays(Io& io, Pool& f) {
 /// Alive slots hold finite values and a mass within limits, free ones are
 /// parked, and the free stack lists each free slot once: what a run leaves.
 void check_slots(const ByteReader& in, const FlakePool& f) {
-    std::vector<bool> is_free(f.capacity(), false);
+    Vector<bool> is_free(f.capacity(), false);
     for (const std::uint32_t s : f.free_stack) {
         in.require(s < f.capacity() && !is_free[s], "lists a free slot twice or past the pool");
         is_free[s] = true;

@@ -3,6 +3,7 @@
 /// stack [ZCL §III.B]: up to millions of flakes, not one entity each.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 
@@ -17,8 +18,9 @@
 
 namespace snow {
 
-/// Storage for CacheAligned: `bytes` on a cache line, or on whole 2 MiB
-/// pages offered to the kernel as huge pages from 2 MiB on (flake_pool.cpp).
+/// Storage for CacheAligned, from the host's allocator: `bytes` on a cache
+/// line, or on whole 2 MiB pages offered to the kernel as huge pages from
+/// 2 MiB on (flake_pool.cpp).
 [[nodiscard]] void* allocate_pool_array(std::size_t bytes);
 void free_pool_array(void* p, std::size_t bytes) noexcept;
 
@@ -72,7 +74,7 @@ struct FlakePool {
     /// The wind field's wind each flake drags towards, held between samples
     /// (systems/flakes/held_wind.hpp): one array per axis, empty without a field.
     PoolArray<std::int16_t> held_wind[3];
-    std::vector<std::uint32_t> free_stack; ///< free slots; top = back()
+    Vector<std::uint32_t> free_stack; ///< free slots; top = back()
     std::uint32_t alive = 0;
     std::uint32_t max_alive = 0; ///< high-water mark of `alive`
     /// One past the highest slot ever handed out: every alive slot is below it,

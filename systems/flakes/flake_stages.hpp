@@ -96,8 +96,15 @@ inline std::uint32_t list_flagged(const std::uint8_t* flags, std::size_t m, std:
     return n;
 }
 
+// Each stage's prepare makes its world resource and gives it room for the
+// scene as it stands, so that no tick allocates; prepare_flake_pass() calls
+// all three after each change of the scene. Integrate's and deposit's begin
+// call theirs first (a no-op then); collide's begin rebuilds the collider
+// grid into the room prepare_collide made.
+
 /// Integrate ([WF §3], [ZCL §III.C]): the rule of SimConfig::integrator for
 /// slots [b, e) of chunk `chunk`, in place, their old positions to `starts`.
+IntegrateTick& prepare_integrate(World& w);
 IntegrateTick& integrate_begin(World& w);
 void integrate_block(const IntegrateTick& t, std::size_t chunk, const PathStarts& starts,
                      std::size_t b, std::size_t e);
@@ -108,6 +115,7 @@ void integrate_end(World& w, const IntegrateTick& t);
 /// which the later stages skip.
 /// With `shared`, the block's flagged slots (collide's and deposit's) are
 /// also listed there for deposit_list; collide tests only its own among them.
+void prepare_collide(World& w);
 CollideTick& collide_begin(World& w);
 /// Makes this tick's prefilter flag every flake deposit's prefilter would
 /// flag too (for the flake pass; a stage run alone keeps its own flags).
@@ -126,6 +134,7 @@ void collide_end(World& w, const CollideTick& t);
 /// the ground, rarely in cache), deposit_land tests them exactly and records
 /// the landings; between the two the pass runs the next block, so the loads
 /// have arrived.
+DepositTick* prepare_deposit(World& w);
 DepositTick* deposit_begin(World& w);
 [[nodiscard]] const DepositBins& deposit_bins(const DepositTick& t);
 /// Whether the flake pass shares collide's prefilter this tick (after

@@ -26,7 +26,6 @@
 
 #include <bit>
 #include <cstdint>
-#include <vector>
 
 namespace snow {
 
@@ -165,9 +164,9 @@ struct IntegrateTick {
     std::uint32_t phase = 0; ///< each block's run number phase samples this tick
     float lookahead = 0.0f;  ///< s: half a hold, how far ahead of the flake a sample is taken
     Integrator kind = Integrator::explicit_euler;
-    /// One count per chunk, sized once per pool size; each chunk's blocks
+    /// One count per chunk, sized with the pool; each chunk's blocks
     /// (one thread, one after another) add to its own entry only.
-    mutable std::vector<std::uint32_t> stiff;
+    mutable Vector<std::uint32_t> stiff;
 };
 
 namespace {
@@ -207,14 +206,20 @@ std::uint32_t integrate_lanes(const IntegrateTick& t, const Air& air, const Lane
 
 } // namespace
 
-IntegrateTick& integrate_begin(World& w) {
-    const auto& cfg = w.resource<SimConfig>();
-    FlakePool& f = w.resource<FlakePool>();
-    const auto* wind = w.try_resource<Wind>();
+IntegrateTick& prepare_integrate(World& w) {
     auto* t = w.try_resource<IntegrateTick>();
     if (t == nullptr) {
         t = &w.set_resource<IntegrateTick>();
     }
+    t->stiff.resize(chunk_count(w.resource<FlakePool>().capacity(), flake_grain));
+    return *t;
+}
+
+IntegrateTick& integrate_begin(World& w) {
+    const auto& cfg = w.resource<SimConfig>();
+    FlakePool& f = w.resource<FlakePool>();
+    const auto* wind = w.try_resource<Wind>();
+    IntegrateTick* t = &prepare_integrate(w);
     t->pool = {
         nullptr,     nullptr,     nullptr,     f.px.data(),       f.py.data(),        f.pz.data(),
         f.vx.data(), f.vy.data(), f.vz.data(), f.k_over_m.data(), f.mass_units.data()};
@@ -230,7 +235,6 @@ IntegrateTick& integrate_begin(World& w) {
         t->lookahead = 0.5f * static_cast<float>(t->sample_every) * cfg.dt;
     }
     t->kind = cfg.integrator;
-    t->stiff.resize(chunk_count(f.capacity(), flake_grain)); // allocates once per pool size
     std::fill(t->stiff.begin(), t->stiff.end(), 0u);
     return *t;
 }

@@ -1,6 +1,8 @@
 // collider_grid: the cell index of box and sphere colliders [WF §8].
-// Built only when the solids or the surfaces change (source_versions.hpp), so
-// its allocations never happen in a steady tick.
+// Built only when the solids or the surfaces change (source_versions.hpp), at
+// the start of the next tick, into the room the call that changed them made
+// (reserve_collider_grid): a tick never allocates, and adding many colliders
+// one by one does not rebuild it each time.
 #include "systems/geometry/collider_grid.hpp"
 
 #include "systems/core/limits.hpp"
@@ -19,11 +21,10 @@ namespace {
 
 constexpr float neg_inf = -std::numeric_limits<float>::infinity();
 
-/// (owner bits, creation order, surface) for every surface on a SnowHolder solid.
-using OwnedSurface = std::tuple<std::uint32_t, std::uint32_t, Entity>;
+using OwnedSurface = ColliderGrid::OwnedSurface;
 
-std::vector<OwnedSurface> owned_surfaces(const World& w) {
-    std::vector<OwnedSurface> out;
+void owned_surfaces(const World& w, Vector<OwnedSurface>& out) {
+    out.clear();
     std::uint32_t order = 0;
     w.each<SurfaceOf, SnowSurface>([&](Entity e, const SurfaceOf& of, const SnowSurface&) {
         if (!of.owner.is_null() && w.has<SnowHolder>(of.owner)) {
@@ -35,12 +36,11 @@ std::vector<OwnedSurface> owned_surfaces(const World& w) {
     std::sort(out.begin(), out.end(), [](const OwnedSurface& a, const OwnedSurface& b) {
         return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
     });
-    return out;
 }
 
 /// Appends the surfaces of `owner` to grid.holder_surfaces; returns [begin, end).
 std::pair<std::uint32_t, std::uint32_t>
-take_surfaces(ColliderGrid& grid, const std::vector<OwnedSurface>& owned, std::uint32_t owner) {
+take_surfaces(ColliderGrid& grid, const Vector<OwnedSurface>& owned, std::uint32_t owner) {
     const auto lo = std::lower_bound(
         owned.begin(), owned.end(), owner,
         [](const OwnedSurface& s, std::uint32_t bits) { return std::get<0>(s) < bits; });
@@ -56,7 +56,8 @@ void collect(World& w, ColliderGrid& grid) {
     grid.spheres.clear();
     grid.meshes.clear();
     grid.holder_surfaces.clear();
-    const std::vector<OwnedSurface> owned = owned_surfaces(w);
+    owned_surfaces(w, grid.owned);
+    const Vector<OwnedSurface>& owned = grid.owned;
     w.each<BoxCollider>([&](Entity e, const BoxCollider& b) {
         const auto [sb, se] = take_surfaces(grid, owned, e.bits);
         grid.boxes.push_back(GridBox{b.box, e.bits, sb, se});
@@ -92,26 +93,31 @@ void for_cells(const ColliderGrid& g, float x0, float x1, float z0, float z1, Fn
     }
 }
 
+/// Calls per_item(cell, item, top) for every cell each collected sphere and
+/// box overlaps: spheres first, each item as cell_items holds it.
+template <typename Fn>
+void visit_items(const ColliderGrid& g, Fn&& per_item) {
+    for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
+        const GridSphere& s = g.spheres[i];
+        for_cells(g, s.center.x - s.radius, s.center.x + s.radius, s.center.z - s.radius,
+                  s.center.z + s.radius, [&](std::size_t c) {
+                      per_item(c, i | ColliderGrid::sphere_tag, s.center.y + s.radius);
+                  });
+    }
+    for (std::uint32_t i = 0; i < g.boxes.size(); ++i) {
+        const Aabb& b = g.boxes[i].box;
+        for_cells(g, b.min.x, b.max.x, b.min.z, b.max.z,
+                  [&](std::size_t c) { per_item(c, i, b.max.y); });
+    }
+}
+
 /// Two passes (count, then fill) so each cell's items are contiguous.
 void bin(ColliderGrid& g) {
     const std::size_t cells = static_cast<std::size_t>(g.nx) * g.nz;
-    std::vector<std::uint32_t> count(cells, 0);
+    Vector<std::uint32_t>& count = g.count;
+    count.assign(cells, 0);
     g.cell_top.assign(cells, neg_inf);
-    auto visit = [&](auto&& per_item) {
-        for (std::uint32_t i = 0; i < g.spheres.size(); ++i) {
-            const GridSphere& s = g.spheres[i];
-            for_cells(g, s.center.x - s.radius, s.center.x + s.radius, s.center.z - s.radius,
-                      s.center.z + s.radius, [&](std::size_t c) {
-                          per_item(c, i | ColliderGrid::sphere_tag, s.center.y + s.radius);
-                      });
-        }
-        for (std::uint32_t i = 0; i < g.boxes.size(); ++i) {
-            const Aabb& b = g.boxes[i].box;
-            for_cells(g, b.min.x, b.max.x, b.min.z, b.max.z,
-                      [&](std::size_t c) { per_item(c, i, b.max.y); });
-        }
-    };
-    visit([&](std::size_t c, std::uint32_t, float top) {
+    visit_items(g, [&](std::size_t c, std::uint32_t, float top) {
         ++count[c];
         g.cell_top[c] = std::max(g.cell_top[c], top);
     });
@@ -121,13 +127,13 @@ void bin(ColliderGrid& g) {
     }
     g.cell_items.assign(g.cell_start[cells], 0);
     std::fill(count.begin(), count.end(), 0);
-    visit([&](std::size_t c, std::uint32_t item, float) {
+    visit_items(g, [&](std::size_t c, std::uint32_t item, float) {
         g.cell_items[g.cell_start[c] + count[c]++] = item;
     });
 }
 
 /// out[c] = the maximum of in over c and its 8 neighbours.
-void dilate(const ColliderGrid& g, const std::vector<float>& in, std::vector<float>& out) {
+void dilate(const ColliderGrid& g, const Vector<float>& in, Vector<float>& out) {
     out.assign(in.size(), neg_inf);
     for (std::uint32_t j = 0; j < g.nz; ++j) {
         for (std::uint32_t i = 0; i < g.nx; ++i) {
@@ -145,7 +151,8 @@ void dilate(const ColliderGrid& g, const std::vector<float>& in, std::vector<flo
 /// cell_mesh_reach from mesh triangles and mesh surfaces, cell_reach from
 /// those and the box and sphere tops (within the cell, and around it).
 void reach(const World& w, ColliderGrid& g) {
-    std::vector<float> mesh(g.cell_top.size(), neg_inf);
+    Vector<float>& mesh = g.mesh_top;
+    mesh.assign(g.cell_top.size(), neg_inf);
     const auto raise = [&](float x0, float x1, float z0, float z1, float top) {
         for_cells(g, x0, x1, z0, z1, [&](std::size_t c) { mesh[c] = std::max(mesh[c], top); });
     };
@@ -166,7 +173,7 @@ void reach(const World& w, ColliderGrid& g) {
     for (std::size_t c = 0; c < mesh.size(); ++c) {
         mesh[c] = std::max(mesh[c], g.cell_top[c]);
     }
-    std::vector<float> around;
+    Vector<float>& around = g.around;
     dilate(g, mesh, around);
     g.cell_reach.resize(2 * mesh.size());
     for (std::size_t c = 0; c < mesh.size(); ++c) {
@@ -178,7 +185,7 @@ void reach(const World& w, ColliderGrid& g) {
 
 } // namespace
 
-void row_tops(const ColliderGrid& g, const std::vector<float>& reach, std::vector<float>& out) {
+void row_tops(const ColliderGrid& g, const Vector<float>& reach, Vector<float>& out) {
     out.assign(g.nz, neg_inf);
     const std::size_t row = 2 * static_cast<std::size_t>(g.nx);
     for (std::uint32_t j = 0; j < g.nz; ++j) {
@@ -189,8 +196,14 @@ void row_tops(const ColliderGrid& g, const std::vector<float>& reach, std::vecto
 
 namespace {
 
-void rebuild(World& w, ColliderGrid& g, const Aabb& bounds) {
-    collect(w, g);
+/// The world's grid, made when missing with its cells laid over the bounds
+/// (fixed when the Simulation is made).
+ColliderGrid& grid_of(World& w) {
+    if (auto* g = w.try_resource<ColliderGrid>()) {
+        return *g;
+    }
+    ColliderGrid& g = w.set_resource<ColliderGrid>();
+    const Aabb& bounds = w.resource<SimConfig>().bounds;
     g.x0 = bounds.min.x;
     g.z0 = bounds.min.z;
     const glm::vec3 ext = bounds.size();
@@ -200,8 +213,7 @@ void rebuild(World& w, ColliderGrid& g, const Aabb& bounds) {
     g.cell_size_z = ext.z / static_cast<float>(g.nz);
     g.inv_cell_x = ext.x > 0.0f ? 1.0f / g.cell_size_x : 0.0f;
     g.inv_cell_z = ext.z > 0.0f ? 1.0f / g.cell_size_z : 0.0f;
-    bin(g);
-    reach(w, g);
+    return g;
 }
 
 } // namespace
@@ -213,19 +225,34 @@ const GridMesh* ColliderGrid::find_mesh(std::uint32_t id) const {
     return it != meshes.end() && it->entity == id ? &*it : nullptr;
 }
 
+void reserve_collider_grid(World& w) {
+    ColliderGrid& g = grid_of(w);
+    collect(w, g); // the next rebuild collects the same
+    std::size_t items = 0;
+    visit_items(g, [&](std::size_t, std::uint32_t, float) { ++items; });
+    const std::size_t cells = static_cast<std::size_t>(g.nx) * g.nz;
+    g.cell_start.reserve(cells + 1);
+    g.cell_items.reserve(items);
+    g.count.reserve(cells);
+    for (Vector<float>* v : {&g.cell_top, &g.cell_mesh_reach, &g.mesh_top, &g.around}) {
+        v->reserve(cells);
+    }
+    g.cell_reach.reserve(2 * cells);
+    g.row_reach.reserve(g.nz);
+}
+
 ColliderGrid& update_collider_grid(World& w) {
-    ColliderGrid* g = w.try_resource<ColliderGrid>();
-    if (g == nullptr) {
-        g = &w.set_resource<ColliderGrid>();
-    }
+    ColliderGrid& g = grid_of(w);
     const SourceVersions v = source_versions(w);
-    if (!g->built || g->solids_version != v.solids || g->surfaces_version != v.surfaces) {
-        rebuild(w, *g, w.resource<SimConfig>().bounds);
-        g->solids_version = v.solids;
-        g->surfaces_version = v.surfaces;
-        g->built = true;
+    if (!g.built || g.solids_version != v.solids || g.surfaces_version != v.surfaces) {
+        collect(w, g);
+        bin(g);
+        reach(w, g);
+        g.solids_version = v.solids;
+        g.surfaces_version = v.surfaces;
+        g.built = true;
     }
-    return *g;
+    return g;
 }
 
 } // namespace snow

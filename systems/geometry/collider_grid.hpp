@@ -7,12 +7,13 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
 #include "ecs/world.hpp"
 #include "systems/core/source_versions.hpp"
 #include "systems/geometry/geometry.hpp"
 
 #include <cstdint>
-#include <vector>
+#include <tuple>
 
 namespace snow {
 
@@ -52,26 +53,33 @@ struct ColliderGrid {
     float inv_cell_x = 1.0f, inv_cell_z = 1.0f;   ///< cells per metre
     float cell_size_x = 1.0f, cell_size_z = 1.0f; ///< m
     std::uint32_t nx = 1, nz = 1;
-    std::vector<std::uint32_t> cell_start; ///< nx·nz + 1 offsets
-    std::vector<std::uint32_t> cell_items;
-    std::vector<float> cell_top; ///< highest box/sphere top over the cell (-inf if none)
+    Vector<std::uint32_t> cell_start; ///< nx·nz + 1 offsets
+    Vector<std::uint32_t> cell_items;
+    Vector<float> cell_top; ///< highest box/sphere top over the cell (-inf if none)
     /// Highest mesh top (triangles and mesh surfaces) over the cell or its 8
     /// neighbours.
-    std::vector<float> cell_mesh_reach;
+    Vector<float> cell_mesh_reach;
     /// What the collision prefilter reads, two floats per cell c: at 2c the
     /// highest top a path that starts and ends in c can meet (the boxes and
     /// spheres over c, cell_mesh_reach[c]); at 2c + 1 the highest top of any
     /// collider over c or its 8 neighbours, for a path that moved less than a
     /// cell per tick but may have come from one of them. A flake whose path
     /// stays above the one that applies meets nothing.
-    std::vector<float> cell_reach;
+    Vector<float> cell_reach;
     /// Per row of cells, the highest of cell_reach over it (row_tops()): a
     /// path that ends in the row meets nothing above this.
-    std::vector<float> row_reach;
-    std::vector<GridBox> boxes;
-    std::vector<GridSphere> spheres;
-    std::vector<GridMesh> meshes;        ///< sorted by entity bits (looked up from top_id)
-    std::vector<Entity> holder_surfaces; ///< surface entities, grouped by owner
+    Vector<float> row_reach;
+    Vector<GridBox> boxes;
+    Vector<GridSphere> spheres;
+    Vector<GridMesh> meshes;        ///< sorted by entity bits (looked up from top_id)
+    Vector<Entity> holder_surfaces; ///< surface entities, grouped by owner
+    /// A rebuild's own buffers, kept (it runs inside a tick): (owner bits,
+    /// creation order, surface) of every surface on a SnowHolder solid, the
+    /// items per cell, and the mesh tops before and after dilation.
+    using OwnedSurface = std::tuple<std::uint32_t, std::uint32_t, Entity>;
+    Vector<OwnedSurface> owned;
+    Vector<std::uint32_t> count;
+    Vector<float> mesh_top, around;
 
     /// Cell column of world x, clamped into the grid (NaN gives 0).
     [[nodiscard]] std::uint32_t cell_x(float x) const {
@@ -98,11 +106,15 @@ struct ColliderGrid {
 /// layout (two floats per cell) over row j's cells: one bound for a block of
 /// flakes whose paths end within a few rows, read instead of a table entry
 /// per flake.
-void row_tops(const ColliderGrid& g, const std::vector<float>& reach, std::vector<float>& out);
+void row_tops(const ColliderGrid& g, const Vector<float>& reach, Vector<float>& out);
 
 /// Returns the World's ColliderGrid (created if missing), rebuilt first if
 /// the solids or the surfaces changed since it was built (SimConfig::bounds
 /// is fixed when the Simulation is made).
 ColliderGrid& update_collider_grid(World& w);
+/// Gives the World's ColliderGrid room for a rebuild from the colliders and
+/// surfaces it holds now (a cheap count, no rebuild): the rebuild at the
+/// next tick then allocates nothing.
+void reserve_collider_grid(World& w);
 
 } // namespace snow

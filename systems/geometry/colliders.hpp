@@ -3,10 +3,10 @@
 /// SnowSurface keeps the snow that lands on its top.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/geometry/geometry.hpp"
 
 #include <glm/vec3.hpp>
-#include <vector>
 
 namespace snow {
 
@@ -25,7 +25,7 @@ struct SphereCollider {
 /// Triangle mesh in world space (3 vertices per triangle). Flakes meet its
 /// top through the occlusion map, never by per-triangle tests [SKY].
 struct MeshCollider {
-    std::vector<glm::vec3> triangles;
+    Vector<glm::vec3> triangles;
 };
 
 } // namespace snow

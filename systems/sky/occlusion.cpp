@@ -51,17 +51,12 @@ float quantised_angle(double angle, float previous) {
 Layout layout_for(const World& w, const OcclusionCamera& cam, const OcclusionMap& previous) {
     Layout l;
     const Aabb& b = w.resource<SimConfig>().bounds;
-    const glm::vec3 ext = b.size();
-    const std::uint32_t res = std::max<std::uint32_t>(cam.resolution, 1);
-    const float longest = std::max(ext.x, ext.z);
     l.x0 = b.min.x;
     l.z0 = b.min.z;
-    // `resolution` texels along the longer side; square texels.
-    l.texel = longest > 0.0f ? longest / static_cast<float>(res) : 1.0f;
-    l.width =
-        std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::ceil(ext.x / l.texel)), 1, res);
-    l.height =
-        std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::ceil(ext.z / l.texel)), 1, res);
+    const OcclusionGrid grid = occlusion_grid(w, cam);
+    l.texel = grid.texel;
+    l.width = grid.width;
+    l.height = grid.height;
     const auto* wind = w.try_resource<Wind>();
     if (cam.tilt == 0.0f || wind == nullptr) {
         return l;
@@ -88,6 +83,34 @@ bool up_to_date(const OcclusionMap& m, const Layout& l, const SourceVersions& so
 
 } // namespace
 
+OcclusionGrid occlusion_grid(const World& w, const OcclusionCamera& cam) {
+    OcclusionGrid g;
+    const glm::vec3 ext = w.resource<SimConfig>().bounds.size();
+    const std::uint32_t res = std::max<std::uint32_t>(cam.resolution, 1);
+    const float longest = std::max(ext.x, ext.z);
+    g.texel = longest > 0.0f ? longest / static_cast<float>(res) : 1.0f;
+    g.width =
+        std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::ceil(ext.x / g.texel)), 1, res);
+    g.height =
+        std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::ceil(ext.z / g.texel)), 1, res);
+    return g;
+}
+
+void prepare_occlusion(World& w) {
+    const auto* cam = w.try_resource<OcclusionCamera>();
+    if (cam == nullptr) {
+        return;
+    }
+    auto* map = w.try_resource<OcclusionMap>();
+    if (map == nullptr) {
+        map = &w.set_resource<OcclusionMap>(); // not built: as if absent (hash, snapshots)
+    }
+    const OcclusionGrid grid = occlusion_grid(w, *cam);
+    const std::size_t texels = static_cast<std::size_t>(grid.width) * grid.height;
+    map->top_y.reserve(texels);
+    map->top_id.reserve(texels);
+}
+
 float occlusion_exposure(const OcclusionMap& map, float x, float y, float z, float tolerance) {
     std::uint32_t i = 0, j = 0;
     if (!occlusion_texel(map, x, y, z, i, j)) {
@@ -96,7 +119,7 @@ float occlusion_exposure(const OcclusionMap& map, float x, float y, float z, flo
     return y >= map.top_y[static_cast<std::size_t>(j) * map.width + i] - tolerance ? 1.0f : 0.0f;
 }
 
-void surface_exposure(const OcclusionMap& map, const SnowSurface& s, std::vector<float>& out,
+void surface_exposure(const OcclusionMap& map, const SnowSurface& s, Vector<float>& out,
                       float tolerance) {
     out.resize(s.cell_count());
     for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
@@ -114,10 +137,8 @@ void occlusion_system(World& w) {
     if (cam == nullptr) {
         return;
     }
-    auto* map = w.try_resource<OcclusionMap>();
-    if (map == nullptr) {
-        map = &w.set_resource<OcclusionMap>();
-    }
+    prepare_occlusion(w);
+    auto* map = &w.resource<OcclusionMap>();
     const SourceVersions sources = source_versions(w);
     const Layout l = layout_for(w, *cam, *map);
     if (up_to_date(*map, l, sources)) {

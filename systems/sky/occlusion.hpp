@@ -4,6 +4,8 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
+#include "ecs/world.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/core/source_versions.hpp"
@@ -13,7 +15,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include <snow/defs.hpp>
 
@@ -27,6 +28,14 @@ inline constexpr std::uint32_t occlusion_wind_steps = 64;
 inline constexpr float occlusion_tolerance = 0.05f;
 
 struct SnowSurface;
+
+/// The texels of a camera's map over the simulation bounds: `resolution`
+/// along the longer side, square.
+struct OcclusionGrid {
+    float texel = 1.0f;
+    std::uint32_t width = 1, height = 1;
+};
+[[nodiscard]] OcclusionGrid occlusion_grid(const World& w, const OcclusionCamera& cam);
 
 /// Texel (i, j) of world point (x, y, z) along the map's projection; false outside the map.
 [[nodiscard]] inline bool occlusion_texel(const OcclusionMap& map, float x, float y, float z,
@@ -47,7 +56,7 @@ struct SnowSurface;
                                        float tolerance = occlusion_tolerance);
 /// Exposure (0 or 1) of every cell centre of a surface at its snow top; `out`
 /// is resized to the cell count (reuse it to avoid allocation).
-void surface_exposure(const OcclusionMap& map, const SnowSurface& s, std::vector<float>& out,
+void surface_exposure(const OcclusionMap& map, const SnowSurface& s, Vector<float>& out,
                       float tolerance = occlusion_tolerance);
 
 /// `occlusion.*`: the sky-map camera [SKY].

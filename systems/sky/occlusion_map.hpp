@@ -4,10 +4,10 @@
 /// occlusion system, the covers and the flakes read it.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/core/source_versions.hpp"
 
 #include <cstdint>
-#include <vector>
 
 namespace snow {
 
@@ -18,8 +18,8 @@ namespace snow {
 struct OcclusionMap {
     float x0 = 0.0f, z0 = 0.0f, texel = 1.0f;
     std::uint32_t width = 0, height = 0;
-    std::vector<float> top_y;          ///< highest geometry (m); -inf where none
-    std::vector<std::uint32_t> top_id; ///< Entity::bits of that geometry; 0 where none
+    Vector<float> top_y;          ///< highest geometry (m); -inf where none
+    Vector<std::uint32_t> top_id; ///< Entity::bits of that geometry; 0 where none
     /// Bumped whenever the texels are rewritten (a refresh or a restore), for
     /// the caches built on the map; it never goes back.
     std::uint64_t version = 0;

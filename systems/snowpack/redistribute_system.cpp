@@ -26,7 +26,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <vector>
 
 namespace snow {
 
@@ -50,16 +49,16 @@ struct TileWork {
     Box cells;
 };
 
-/// World resource, sized to the largest surface once (no allocation in a
-/// steady tick). Between steps `delta` is all zero and `box` all empty.
+/// World resource, sized to the largest surface (prepare_redistribute).
+/// Between steps `delta` is all zero and `box` all empty.
 struct RedistributeScratch {
-    std::vector<std::int64_t> delta;          ///< net change per cell of one step
-    std::vector<Box> box;                     ///< per tile: cells to evaluate next step
-    std::vector<std::uint8_t> touched;        ///< per tile: listed in touched_tiles
-    std::vector<TileWork> active;             ///< this step's work
-    std::vector<std::uint32_t> next;          ///< tiles with a non-empty box
-    std::vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
-    std::vector<std::uint8_t> scan_flags;     ///< scan_step: per cell, may send (flag_row)
+    Vector<std::int64_t> delta;          ///< net change per cell of one step
+    Vector<Box> box;                     ///< per tile: cells to evaluate next step
+    Vector<std::uint8_t> touched;        ///< per tile: listed in touched_tiles
+    Vector<TileWork> active;             ///< this step's work
+    Vector<std::uint32_t> next;          ///< tiles with a non-empty box
+    Vector<std::uint32_t> touched_tiles; ///< tiles whose cells got a delta
+    Vector<std::uint8_t> scan_flags;     ///< scan_step: per cell, may send (flag_row)
 
     void fit(std::size_t cells, std::size_t tiles) {
         if (delta.size() < cells) {
@@ -424,7 +423,7 @@ constexpr std::size_t prefetch_ahead = 4;
 void smooth_step(TileGrid& g, SnowSurface& s) {
     g.take_next();
     with_levels(s, [&](const auto& lv) {
-        const std::vector<TileWork>& boxes = g.r.active;
+        const Vector<TileWork>& boxes = g.r.active;
         for (std::size_t k = 0; k < boxes.size(); ++k) {
             if (k + prefetch_ahead < boxes.size()) {
                 const Box& b = boxes[k + prefetch_ahead].cells;
@@ -461,23 +460,31 @@ std::size_t marked_area(const SnowSurface& s) {
 
 } // namespace
 
+void prepare_redistribute(World& w) {
+    if (w.count<SnowSurface>() == 0) {
+        return;
+    }
+    auto* scratch = w.try_resource<RedistributeScratch>();
+    if (scratch == nullptr) {
+        scratch = &w.set_resource<RedistributeScratch>();
+    }
+    for (const SnowSurface& s : w.pool<SnowSurface>().components()) {
+        scratch->fit(s.cell_count(), static_cast<std::size_t>(s.tiles_x()) * s.tiles_z());
+    }
+}
+
 void redistribute_system(World& w) {
+    prepare_redistribute(w);
     auto& surfaces = w.pool<SnowSurface>().components();
     auto& counters = w.resource<SimCounters>();
     // Sub-iterations per surface per tick; a pile still moving after that
     // keeps its cells marked and continues next tick.
     const std::uint32_t max_iterations = w.resource<SimConfig>().smoothing_iterations;
-    auto* scratch = w.try_resource<RedistributeScratch>();
-    if (scratch == nullptr) {
-        scratch = &w.set_resource<RedistributeScratch>();
-    }
+    auto* scratch = &w.resource<RedistributeScratch>();
     for (SnowSurface& s : surfaces) {
         if (s.dirty_empty()) {
             continue;
         }
-        const std::size_t tiles = static_cast<std::size_t>(s.tiles_x()) * s.tiles_z();
-        // once per larger surface
-        scratch->fit(s.cell_count(), tiles);
         TileGrid g{s, *scratch, s.tiles_x()};
         // First step: the cells whose cap may now fail, the marked ones and
         // their neighbours; per tile, or in one scan when most tiles are marked.

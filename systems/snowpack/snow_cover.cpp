@@ -28,8 +28,8 @@ constexpr float reappear_height = 1.0e-3f;
 /// Every cell of `cover` whose centre lies on declared surface `t` where t's
 /// bare top is the column's top (within a cell's height): the cover leaves it
 /// to the surface.
-void yield_to_surface(const SnowSurface& cover, const SnowSurface& t, const std::vector<float>& top,
-                      std::vector<std::uint8_t>& owned) {
+void yield_to_surface(const SnowSurface& cover, const SnowSurface& t, const Vector<float>& top,
+                      Vector<std::uint8_t>& owned) {
     const double c = cover.cell;
     const double tol = std::max(cover.cell, t.cell);
     const auto first = [&](double lo, double origin) {
@@ -56,35 +56,43 @@ void yield_to_surface(const SnowSurface& cover, const SnowSurface& t, const std:
     }
 }
 
+/// World resource: a rebuild's buffers, with room for the largest cover.
+struct CoverScratch {
+    OcclusionMap map; ///< the geometry under the cover, one texel per cell
+    Vector<std::uint8_t> owned;
+    Vector<std::int64_t> target;
+};
+
 /// New base level per cell from the geometry now in the world.
-void target_base(const World& w, const SnowSurface& s, SnowCover& cover,
-                 std::vector<std::int64_t>& out) {
-    OcclusionMap m;
+void target_base(const World& w, const SnowSurface& s, SnowCover& cover, CoverScratch& scratch) {
+    OcclusionMap& m = scratch.map;
     m.x0 = s.x0;
     m.z0 = s.z0;
     m.texel = s.cell;
     m.width = s.nx;
     m.height = s.nz;
     rasterise_geometry(w, m, is_cover);
-    std::vector<std::uint8_t> owned(s.cell_count(), 1);
+    Vector<std::uint8_t>& owned = scratch.owned;
+    owned.assign(s.cell_count(), 1);
     w.each<SnowSurface>([&](Entity e, const SnowSurface& t) {
         if (!w.has<SnowCover>(e)) {
             yield_to_surface(s, t, m.top_y, owned);
         }
     });
+    Vector<std::int64_t>& out = scratch.target;
     out.resize(s.cell_count());
     for (std::size_t i = 0; i < out.size(); ++i) {
         const double level = static_cast<double>(m.top_y[i]) / s.unit_height;
         out[i] = owned[i] != 0 && std::abs(level) <= max_surface_level ? std::llround(level)
                                                                        : void_level;
     }
-    cover.column_top = std::move(m.top_y);
+    cover.column_top = m.top_y; // a copy: both keep their room
 }
 
 /// Moves every changed cell to its new base; its snow leaves as clumps first.
 /// Returns false when the pool could not take all of it (those cells keep
 /// their old base and the rebuild is tried again next tick).
-bool apply_base(World& w, SnowSurface& s, const std::vector<std::int64_t>& target) {
+bool apply_base(World& w, SnowSurface& s, const Vector<std::int64_t>& target) {
     FlakePool& pool = w.resource<FlakePool>();
     const float k_over_m = clump_drag(w);
     bool complete = true;
@@ -193,18 +201,41 @@ SnowSurface make_cover_surface(const CoverDef& def) {
     return s;
 }
 
+void prepare_cover(World& w) {
+    if (w.count<SnowCover>() == 0) {
+        return;
+    }
+    auto* scratch = w.try_resource<CoverScratch>();
+    if (scratch == nullptr) {
+        scratch = &w.set_resource<CoverScratch>();
+    }
+    std::size_t largest = 0;
+    w.each<SnowCover>([&](Entity e, SnowCover& cover) {
+        const std::size_t cells = w.get<SnowSurface>(e).cell_count();
+        largest = std::max(largest, cells);
+        cover.column_top.reserve(cells);
+        cover.edge_cells.reserve(cells); // at most one per cell
+        cover.edge_side.reserve(cells);
+    });
+    scratch->map.top_y.reserve(largest);
+    scratch->map.top_id.reserve(largest);
+    scratch->owned.reserve(largest);
+    scratch->target.reserve(largest);
+}
+
 void cover_system(World& w) {
+    prepare_cover(w);
+    CoverScratch& scratch = w.resource<CoverScratch>();
     const SourceVersions versions = source_versions(w);
     auto& covers = w.pool<SnowCover>();
-    std::vector<std::int64_t> target;
     for (std::size_t k = 0; k < covers.size(); ++k) {
         SnowCover& cover = covers.components()[k];
         if (cover.current(versions)) {
             continue;
         }
         SnowSurface& s = w.get<SnowSurface>(covers.entities()[k]);
-        target_base(w, s, cover, target);
-        cover.built = apply_base(w, s, target);
+        target_base(w, s, cover, scratch);
+        cover.built = apply_base(w, s, scratch.target);
         cover.built_from = versions;
         derive_edges(s, cover);
     }

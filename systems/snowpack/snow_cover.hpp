@@ -6,13 +6,13 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
 #include "ecs/world.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/core/source_versions.hpp"
 
 #include <cstdint>
-#include <vector>
 
 #include <snow/defs.hpp>
 
@@ -36,12 +36,12 @@ struct SnowCover {
     }
     /// Per cell, the highest geometry of the column (m); -inf where none.
     /// Kept so a void cell's neighbours know how far the ground drops.
-    std::vector<float> column_top;
+    Vector<float> column_top;
     /// Cells (ascending) with a neighbour lower by more than drop_limit (or
     /// with no geometry at all): spill sheds their excess across that edge.
-    std::vector<std::uint32_t> edge_cells;
+    Vector<std::uint32_t> edge_cells;
     /// Per edge cell, the direction its spill leaves by (0 -x, 1 +x, 2 -z, 3 +z).
-    std::vector<std::uint8_t> edge_side;
+    Vector<std::uint8_t> edge_side;
 };
 
 class ByteWriter;

@@ -222,7 +222,7 @@ void check_surface(const ByteReader& in, const SnowSurface& s) {
     in.require(box_inside(CellBox{s.dirty_x0, s.dirty_z0, s.dirty_x1, s.dirty_z1},
                           CellBox{0, 0, s.nx - 1, s.nz - 1}),
                "has dirty cells outside the surface");
-    std::vector<bool> listed(tiles, false);
+    Vector<bool> listed(tiles, false);
     for (const std::uint32_t t : s.dirty_tiles) {
         in.require(t < tiles && !listed[t] && !s.tile_dirty[t].empty(),
                    "lists a dirty tile twice, past the surface or clean");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ecs/entity.hpp"
+#include "ecs/host_memory.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/core/units.hpp"
@@ -15,7 +16,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <vector>
 
 #include <snow/defs.hpp>
 #include <snow/views.hpp>
@@ -80,18 +80,18 @@ inline constexpr std::uint8_t closed_all = 0xF;
 struct SnowSurface {
     float x0 = 0.0f, z0 = 0.0f, cell = 0.05f;
     std::uint32_t nx = 0, nz = 0;
-    float unit_height = 0.0f;             ///< metres of snow one unit adds to a cell
-    std::vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
+    float unit_height = 0.0f;        ///< metres of snow one unit adds to a cell
+    Vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
     /// Every base_level is the same (a level rectangle), so levels differ by
     /// their snow alone; false: they may differ (a slope, a cover's base).
     bool uniform_base = false;
-    std::vector<std::uint32_t> snow; ///< settled units per cell (row-major, x fastest)
+    Vector<std::uint32_t> snow; ///< settled units per cell (row-major, x fastest)
     /// Per cell, the levels by which packed snow stands lower than its units
     /// would at fresh density (docs/cover_and_bodies.md "Compaction"): its
     /// mean density is fresh_snow_density · snow / depth_levels. Empty until a
     /// body first compacts snow here. At most max_compaction(snow[i]); snow
     /// falling on it keeps the packed layer, so the mean relaxes to fresh.
-    std::vector<std::uint32_t> compacted;
+    Vector<std::uint32_t> compacted;
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
     /// Largest stable height step (levels) to a neighbour, the angle of
@@ -107,7 +107,7 @@ struct SnowSurface {
     /// Per cell, the edges no snow crosses (closed_all bits): a cover closes
     /// the edges at drops of its base and around void cells. Empty for a
     /// plain rectangle, whose cells are all open to each other.
-    std::vector<std::uint8_t> closed;
+    Vector<std::uint8_t> closed;
     /// Bumped whenever base_level changes (a cover following its geometry).
     std::uint64_t base_version = 0;
     // Dirty rectangle (inclusive cell bounds): the bounding box of every cell
@@ -115,9 +115,9 @@ struct SnowSurface {
     std::uint32_t dirty_x0 = 1, dirty_z0 = 1, dirty_x1 = 0, dirty_z1 = 0;
     /// Per tile (row-major, tiles_x() per row): the cells of it waiting for
     /// redistribution. Sized by make_surface (or the first mark_dirty).
-    std::vector<CellBox> tile_dirty;
+    Vector<CellBox> tile_dirty;
     /// The tiles whose tile_dirty box is not empty, in the order first marked.
-    std::vector<std::uint32_t> dirty_tiles;
+    Vector<std::uint32_t> dirty_tiles;
     /// Upper bound of every cell's level, raised by mark_dirty(); lets deposit
     /// skip flakes far above the surface. Whoever changes `snow` calls mark_dirty.
     std::int64_t level_bound = 0;

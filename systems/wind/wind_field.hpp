@@ -5,6 +5,7 @@
 /// cost, and flakes feel the global wind alone. See docs/wind_field.md.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "systems/core/field_rules.hpp"
 #include "systems/core/limits.hpp"
 #include "systems/flakes/held_wind.hpp"
@@ -19,7 +20,6 @@
 #include <cstring>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include <snow/defs.hpp>
 
@@ -187,16 +187,16 @@ struct WindField {
     Lattice centre;                 ///< lattice of pressure and cell-centre velocity
 
     // -- state --
-    std::vector<float> velocity[3];            ///< u, v, w on their faces (m/s)
-    std::vector<float> pressure;               ///< last projection's potential (warm start)
+    Vector<float> velocity[3];                 ///< u, v, w on their faces (m/s)
+    Vector<float> pressure;                    ///< last projection's potential (warm start)
     glm::vec3 inflow{0.0f};                    ///< the global wind of the last step (m/s)
     std::uint32_t wait = 0;                    ///< ticks until the next step
     std::uint64_t steps = 0;                   ///< solver steps taken (0: not yet initialised)
     std::optional<WindTransportDef> transport; ///< snow the wind moves; absent: none
 
     // -- derived after each step --
-    std::vector<float> at_centre[3]; ///< cell-centre velocity, ghosts included (the solver's)
-    std::vector<std::uint64_t> packed_centre; ///< the same packed (pack_wind): what readers read
+    Vector<float> at_centre[3];          ///< cell-centre velocity, ghosts included (the solver's)
+    Vector<std::uint64_t> packed_centre; ///< the same packed (pack_wind): what readers read
 
     /// What flakes read the field through (valid until the next step).
     [[nodiscard]] WindSampler sampler() const;

@@ -47,7 +47,7 @@ bool cell_of(const WindField& f, const glm::vec3& p, std::int32_t (&cell)[3]) {
 
 struct Marker {
     const WindField& f;
-    std::vector<std::uint8_t>& solid;
+    Vector<std::uint8_t>& solid;
 
     void mark(std::int32_t i, std::int32_t j, std::int32_t k) {
         solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
@@ -118,7 +118,7 @@ struct Marker {
 
 } // namespace
 
-void mark_obstacles(const World& w, const WindField& f, std::vector<std::uint8_t>& solid) {
+void mark_obstacles(const World& w, const WindField& f, Vector<std::uint8_t>& solid) {
     solid.assign(f.centre.size(), 0);
     Marker m{f, solid};
     w.each<BoxCollider>([&](Entity, const BoxCollider& b) { m.box(b.box); });

@@ -71,7 +71,7 @@ void each_in_plane(const Lattice& l, int axis, std::int32_t at, Fn&& fn) {
 /// Ghost layers of one velocity component (`inflow`: its global value):
 /// the wind on inflow sides, the neighbouring sample elsewhere (open sides
 /// extrapolate; the floor lets air slide).
-void fill_ghosts(std::vector<float>& d, const Lattice& l, float inflow, std::uint8_t sides) {
+void fill_ghosts(Vector<float>& d, const Lattice& l, float inflow, std::uint8_t sides) {
     for (int axis = 0; axis < 3; ++axis) {
         if (first(l, axis) == 0) {
             continue; // a face axis has no ghosts
@@ -86,7 +86,7 @@ void fill_ghosts(std::vector<float>& d, const Lattice& l, float inflow, std::uin
 /// Inflow faces hold the wind, floor faces zero, faces at obstacles zero.
 void enforce(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow, std::uint8_t sides) {
     for (int a = 0; a < 3; ++a) {
-        std::vector<float>& v = f.velocity[a];
+        Vector<float>& v = f.velocity[a];
         const Lattice& l = f.face[a];
         const std::int32_t top = l.dim[a] - 1;
         if (a == 1) {
@@ -160,8 +160,7 @@ constexpr std::int32_t advect_chunk = 16;
 /// a step (docs/wind_field.md "Cost"). A chunk holding a longer trace, rows
 /// shorter than a chunk, and the first and last face of a face-axis row
 /// (whose x neighbours lie outside it) are read by trilinear().
-void advect(const WindField& f, int a, const std::vector<float>& src, std::vector<float>& dst,
-            float dt) {
+void advect(const WindField& f, int a, const Vector<float>& src, Vector<float>& dst, float dt) {
     const Lattice& c = f.centre;
     const Tracer tr{f.face[a],
                     f.at_centre[0].data(),
@@ -278,8 +277,7 @@ Mixing mixing(const WindField& f, float dt) {
 /// reset or extrapolated anyway), in m.parts explicit parts [STAM §3.3 does
 /// this implicitly; within the limit explicit is cheaper]. Each part writes
 /// `tmp` from v, copies the faces it does not update and swaps the two.
-void diffuse(const WindField& f, int a, std::vector<float>& v, std::vector<float>& tmp,
-             const Mixing& m) {
+void diffuse(const WindField& f, int a, Vector<float>& v, Vector<float>& tmp, const Mixing& m) {
     const Lattice l = f.face[a];
     const std::int32_t sy = l.stride(1), sz = l.stride(2);
     const float lx = m.weight[0], ly = m.weight[1], lz = m.weight[2];
@@ -314,7 +312,7 @@ void diffuse(const WindField& f, int a, std::vector<float>& v, std::vector<float
 }
 
 /// ∇·u per open cell (1/s), from its six faces.
-void divergence(const WindField& f, std::vector<float>& out) {
+void divergence(const WindField& f, Vector<float>& out) {
     const Lattice& c = f.centre;
     const float* u = f.velocity[0].data();
     const float* v = f.velocity[1].data();
@@ -342,6 +340,11 @@ std::int32_t odd_up(std::int32_t n) {
     return n | 1;
 }
 
+/// Elements of each colour's arrays in the ColourSplit of lattice `c`.
+std::size_t colour_size(const Lattice& c) {
+    return static_cast<std::size_t>((odd_up(c.dim[0]) * odd_up(c.dim[1]) * c.dim[2] + 1) / 2);
+}
+
 /// Row pieces of the split: a row's cells 1, 3, 5, … are `odd_i` of one
 /// colour array and its cells 2, 4, 6, … `even_i` of the other, both
 /// contiguous there. Separate restrict pointers let both copies vectorise.
@@ -363,8 +366,8 @@ void interleave(float* __restrict row, const float* __restrict odd_i,
 /// Copies the updated cells of `full` (centre lattice) into the two colour
 /// arrays of `split`, or back with `to_full`; cells outside stay as they are.
 /// Cell i of a row has P = base + i, in colour (base + i) & 1 at (base + i) / 2.
-void split_copy(const Lattice& c, const ColourSplit& split, std::vector<float>& full,
-                std::vector<float> (&colours)[2], bool to_full) {
+void split_copy(const Lattice& c, const ColourSplit& split, Vector<float>& full,
+                Vector<float> (&colours)[2], bool to_full) {
     const std::int32_t cells = c.dim[0] - 2, pairs = cells / 2;
     const bool odd_count = (cells & 1) != 0; // then cell `cells` ends the row alone
     for (std::int32_t k = 1; k < c.dim[2] - 1; ++k) {
@@ -512,7 +515,7 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
     ColourSplit& split = s.split;
     split.px = odd_up(c.dim[0]);
     split.plane = split.px * odd_up(c.dim[1]);
-    const auto size = static_cast<std::size_t>((split.plane * c.dim[2] + 1) / 2);
+    const std::size_t size = colour_size(c);
     for (int colour = 0; colour < 2; ++colour) {
         split.pressure[colour].assign(size, 0.0f);
         split.rhs[colour].assign(size, 0.0f);
@@ -534,7 +537,7 @@ void shift(WindField& f, const glm::vec3& change) {
         if (by == 0.0f) {
             continue;
         }
-        for (std::vector<float>* v : {&f.velocity[a], &f.at_centre[a]}) {
+        for (Vector<float>* v : {&f.velocity[a], &f.at_centre[a]}) {
             for (float& x : *v) {
                 x += by;
             }
@@ -559,6 +562,23 @@ std::uint8_t inflow_sides(const glm::vec3& wind) {
     s |= wind.z > 0.0f ? inflow_z_min : 0;
     s |= wind.z < 0.0f ? inflow_z_max : 0;
     return s;
+}
+
+void reserve_solver(const WindField& f, WindFieldSolver& s) {
+    const std::size_t cells = f.centre.size();
+    s.solid.reserve(cells);
+    s.inv_diag.reserve(cells);
+    s.divergence.reserve(cells);
+    for (int a = 0; a < 3; ++a) {
+        s.closed[a].reserve(f.face[a].size()); // at most every face
+        s.advected[a].reserve(f.face[a].size());
+    }
+    for (int colour = 0; colour < 2; ++colour) {
+        for (auto* v :
+             {&s.split.pressure[colour], &s.split.rhs[colour], &s.split.inv_diag[colour]}) {
+            v->reserve(colour_size(f.centre));
+        }
+    }
 }
 
 void apply_obstacles(WindField& f, WindFieldSolver& s) {
@@ -617,7 +637,7 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
 }
 
 double wind_field_divergence(const WindField& f, const WindFieldSolver& s) {
-    std::vector<float> d(f.centre.size(), 0.0f);
+    Vector<float> d(f.centre.size(), 0.0f);
     divergence(f, d);
     double sum = 0.0;
     std::size_t open = 0;

@@ -3,11 +3,11 @@
 /// wind_field_system.cpp): the obstacle cells and the solver's scratch.
 #pragma once
 
+#include "ecs/host_memory.hpp"
 #include "ecs/world.hpp"
 #include "systems/wind/wind_field.hpp"
 
 #include <cstdint>
-#include <vector>
 
 namespace snow {
 
@@ -29,7 +29,7 @@ enum InflowSide : std::uint8_t {
 struct ColourSplit {
     std::int32_t px = 0;    ///< row length: the lattice's x dim, rounded up to odd
     std::int32_t plane = 0; ///< px · the lattice's y dim rounded up to odd
-    std::vector<float> pressure[2], rhs[2], inv_diag[2];
+    Vector<float> pressure[2], rhs[2], inv_diag[2];
 };
 
 /// World resource beside a WindField: what the geometry makes of the grid
@@ -38,18 +38,22 @@ struct ColourSplit {
 struct WindFieldSolver {
     bool built = false;
     std::uint64_t built_from_solids = 0; ///< SourceVersions::solids it was built from
-    std::vector<std::uint8_t> solid;     ///< per cell of the centre lattice (ghosts 0)
-    std::vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
-    std::vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
+    Vector<std::uint8_t> solid;          ///< per cell of the centre lattice (ghosts 0)
+    Vector<std::int32_t> closed[3];      ///< per component: faces touching a solid cell
+    Vector<float> inv_diag;              ///< per cell: 1 / Σ coefficients of its open neighbours
     std::uint8_t diag_sides = 0xff;      ///< inflow sides inv_diag was built for
     ColourSplit split;                   ///< the sweeps' arrays, by colour
-    std::vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
-    std::vector<float> divergence;
+    Vector<float> advected[3];           ///< semi-Lagrangian output, swapped with the velocity
+    Vector<float> divergence;
 };
 
 /// Marks the cells of the centre lattice that colliders fill: boxes, spheres
 /// and triangle meshes (wind_field_obstacles.cpp). `solid` is resized.
-void mark_obstacles(const World& w, const WindField& f, std::vector<std::uint8_t>& solid);
+void mark_obstacles(const World& w, const WindField& f, Vector<std::uint8_t>& solid);
+
+/// Gives `s` room for everything the field's obstacle rebuilds and steps
+/// write (prepare_wind_field): then neither allocates.
+void reserve_solver(const WindField& f, WindFieldSolver& s);
 
 /// Takes a new obstacle mask: rebuilds the face masks and stops the air in
 /// newly solid faces (the field's state changes, deterministically).

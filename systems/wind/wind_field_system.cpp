@@ -9,12 +9,22 @@
 
 namespace snow {
 
-void wind_field_system(World& w) {
-    WindField& f = w.resource<WindField>();
+void prepare_wind_field(World& w) {
+    const auto* f = w.try_resource<WindField>();
+    if (f == nullptr) {
+        return;
+    }
     auto* s = w.try_resource<WindFieldSolver>();
     if (s == nullptr) {
-        s = &w.set_resource<WindFieldSolver>();
+        s = &w.set_resource<WindFieldSolver>(); // not built: the tick marks the obstacles
     }
+    reserve_solver(*f, *s);
+}
+
+void wind_field_system(World& w) {
+    prepare_wind_field(w);
+    WindField& f = w.resource<WindField>();
+    auto* s = &w.resource<WindFieldSolver>();
     const std::uint64_t solids = source_versions(w).solids;
     if (!s->built || s->built_from_solids != solids) {
         mark_obstacles(w, f, s->solid);

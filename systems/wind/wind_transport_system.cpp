@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 namespace snow {
 
@@ -39,12 +38,13 @@ struct Move {
 };
 
 /// World resource: the moves of one surface's step, the field's windy
-/// columns and a surface's tiles to look at (reused, no allocation once warm).
+/// columns and a surface's tiles to look at (room for the largest:
+/// prepare_wind_transport).
 struct TransportScratch {
-    std::vector<Move> moves;
-    std::vector<float> column_speed; ///< per (i, k) of the centre lattice: max u² + w² (steps²)
-    std::vector<std::uint8_t> windy; ///< per lower corner (k · dim x + i): reads there may be windy
-    std::vector<std::uint8_t> windy_row; ///< per k: some corner of it is windy
+    Vector<Move> moves;
+    Vector<float> column_speed;     ///< per (i, k) of the centre lattice: max u² + w² (steps²)
+    Vector<std::uint8_t> windy;     ///< per lower corner (k · dim x + i): reads there may be windy
+    Vector<std::uint8_t> windy_row; ///< per k: some corner of it is windy
 };
 
 /// The cell downwind of (ix, iz) by (dx, dz) (one of them 0), or off_surface
@@ -73,7 +73,7 @@ void wind_over(const WindSampler& air, const SnowSurface& s, std::uint32_t ix, s
 
 /// The moves of cell (ix, iz) under wind (u, w), appended to `out`.
 void plan_cell(const SnowSurface& s, const WindTransportDef& t, float seconds, std::uint32_t ix,
-               std::uint32_t iz, float u, float w, std::vector<Move>& out) {
+               std::uint32_t iz, float u, float w, Vector<Move>& out) {
     const std::size_t i = s.index(ix, iz);
     const float speed = std::sqrt(u * u + w * w);
     if (!(speed > t.threshold)) {
@@ -111,7 +111,7 @@ void plan_cell(const SnowSurface& s, const WindTransportDef& t, float seconds, s
 void windy_columns(const WindField& f, float threshold, TransportScratch& scratch) {
     const Lattice& c = f.centre;
     const std::int32_t nx = c.dim[0], ny = c.dim[1], nz = c.dim[2];
-    std::vector<float>& top = scratch.column_speed;
+    Vector<float>& top = scratch.column_speed;
     top.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz), 0.0f);
     for (std::int32_t k = 0; k < nz; ++k) {
         float* __restrict row = top.data() + static_cast<std::ptrdiff_t>(k) * nx;
@@ -145,7 +145,7 @@ void windy_columns(const WindField& f, float threshold, TransportScratch& scratc
 /// without the read, and a row of tiles over a calm row of corners is
 /// skipped whole, so the cost follows the windy area.
 void plan_surface(const SnowSurface& s, const WindField& f, const TransportScratch& scratch,
-                  const WindTransportDef& t, float seconds, std::vector<Move>& out) {
+                  const WindTransportDef& t, float seconds, Vector<Move>& out) {
     const WindSampler air = f.sampler();
     const std::uint32_t side = 1u << dirty_tile_shift;
     const auto dim_x = static_cast<std::size_t>(f.centre.dim[0]);
@@ -185,7 +185,7 @@ void plan_surface(const SnowSurface& s, const WindField& f, const TransportScrat
 
 /// Sources first (each gives at most what it had), then destinations; what
 /// cannot arrive (a full pool, a cell at its limit) goes back to its source.
-void apply(SnowSurface& s, const std::vector<Move>& moves, FlakePool& pool, float k_over_m) {
+void apply(SnowSurface& s, const Vector<Move>& moves, FlakePool& pool, float k_over_m) {
     for (const Move& m : moves) {
         s.snow[m.from] -= m.units;
         s.mark_dirty(m.from);
@@ -216,6 +216,26 @@ bool wind_transport_declared(const World& w) {
     return f != nullptr && f->transport.has_value();
 }
 
+void prepare_wind_transport(World& w) {
+    if (!wind_transport_declared(w)) {
+        return;
+    }
+    auto* scratch = w.try_resource<TransportScratch>();
+    if (scratch == nullptr) {
+        scratch = &w.set_resource<TransportScratch>();
+    }
+    const Lattice& c = w.resource<WindField>().centre;
+    const auto columns = static_cast<std::size_t>(c.dim[0]) * static_cast<std::size_t>(c.dim[2]);
+    scratch->column_speed.reserve(columns);
+    scratch->windy.reserve(columns);
+    scratch->windy_row.reserve(static_cast<std::size_t>(c.dim[2]));
+    // At most two moves per cell (plan_cell) of the largest surface.
+    std::size_t largest = 0;
+    w.each<SnowSurface>(
+        [&](Entity, const SnowSurface& s) { largest = std::max(largest, s.cell_count()); });
+    scratch->moves.reserve(2 * largest);
+}
+
 void wind_transport_system(World& w) {
     const WindField& f = w.resource<WindField>();
     // Only on the ticks the field stepped (wind_field_system just set `wait`).
@@ -224,10 +244,8 @@ void wind_transport_system(World& w) {
     }
     const WindTransportDef& t = *f.transport;
     const float seconds = w.resource<SimConfig>().dt * static_cast<float>(f.def.update_every);
-    auto* scratch = w.try_resource<TransportScratch>();
-    if (scratch == nullptr) {
-        scratch = &w.set_resource<TransportScratch>();
-    }
+    prepare_wind_transport(w);
+    auto* scratch = &w.resource<TransportScratch>();
     FlakePool& pool = w.resource<FlakePool>();
     const float k_over_m = clump_drag(w);
     windy_columns(f, t.threshold, *scratch);

@@ -18,10 +18,10 @@ namespace snow::test {
 /// Everything a run leaves behind that a test can compare exactly.
 struct RunEnd {
     FlakePool flakes;
-    std::vector<std::vector<std::uint32_t>> snow;       ///< per surface, pool order
-    std::vector<std::vector<std::int64_t>> base;        ///< per surface, pool order
-    std::vector<std::vector<std::uint32_t>> edge_cells; ///< per cover, pool order
-    std::vector<Body> bodies;                           ///< pool order
+    std::vector<Vector<std::uint32_t>> snow;       ///< per surface, pool order
+    std::vector<Vector<std::int64_t>> base;        ///< per surface, pool order
+    std::vector<Vector<std::uint32_t>> edge_cells; ///< per cover, pool order
+    std::vector<Body> bodies;                      ///< pool order
     MassLedger ledger;
     SimCounters counters;
 };

@@ -127,7 +127,7 @@ SurfaceId add_roof(SnowyYard& y, float low, float high) {
 TEST(Walker, WalksUnderARoofAndLeavesItsSnowAlone) {
     SnowyYard y;
     const SurfaceId roof = add_roof(y, 2.0f, 2.15f); // a porch: higher than the 1.7 m player
-    const std::vector<std::uint32_t> roof_snow = snow_surface(y.sim, roof).snow;
+    const Vector<std::uint32_t> roof_snow = snow_surface(y.sim, roof).snow;
     Walker w(y.sim, {-2.0f, 0.0f, 0.0f});
     y.walk(w, {1.0f, 0.0f}, 60); // to x = -0.6, under the roof
     EXPECT_NEAR(w.eye(y.sim).y, w.depth_under(y.sim) + 1.6f, 1.0e-4f) << "on the ground";

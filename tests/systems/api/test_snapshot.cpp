@@ -112,7 +112,7 @@ TEST(Snapshot, RestoreRightAfterAGeometryChange) {
     sim->run(50);
     sim->add_box({{4.0f, 0.0f, 3.0f}, {6.0f, 2.0f, 5.0f}});
     const ColliderId under_cover = sim->add_sphere({6.0f, 0.5f, 6.0f}, 0.5f);
-    const std::vector<std::int64_t> base = cover(*sim).base_level;
+    const Vector<std::int64_t> base = cover(*sim).base_level;
     test::expect_restore_replays(*sim, 0, 60);
     EXPECT_NE(cover(*sim).base_level, base) << "the cover never followed the new sphere";
     // And restored after the geometry changed back: the cover follows it again.

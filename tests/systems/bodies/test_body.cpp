@@ -202,7 +202,7 @@ TEST(Body, SameStateForOneAndTwoThreadsAndAfterRestore) {
     const std::uint64_t saved_hash = a.sim.state_hash();
     a.sim.run(200);
     const std::uint64_t straight = a.sim.state_hash();
-    const std::vector<std::uint32_t> packed = a.s().compacted;
+    const Vector<std::uint32_t> packed = a.s().compacted;
     restore_snapshot(a.sim, *saved);
     a.sim.run(200);
     EXPECT_EQ(a.sim.state_hash(), straight);
@@ -306,7 +306,7 @@ TEST(Body, ABodyUnderASnowyRoofLeavesTheRoofsSnowAlone) {
     d.spills = false;
     const SurfaceId roof = g.sim.add_surface(d);
     test::snow_every_cell(g.sim, roof, depth_units);
-    const std::vector<std::uint32_t> roof_snow = snow_surface(g.sim, roof).snow;
+    const Vector<std::uint32_t> roof_snow = snow_surface(g.sim, roof).snow;
     // A 1.7 m walker under it, and a 0.5 m ball whose top is 5 cm under the
     // roof's bare top; both cut the ground's snow, neither the roof's.
     BodyDef walker = trudger(0.0f);

@@ -97,7 +97,7 @@ TEST(Occlusion, UnderTheRoofIsNotExposedOnTheRoofIs) {
     EXPECT_EQ(occlusion_exposure(m, 50.0f, 0.0f, 0.0f), 1.0f); // off the map: nothing above
 
     // Per cell of the ground: exactly the roof's 5 × 5 m footprint is in its shadow.
-    std::vector<float> exposure;
+    Vector<float> exposure;
     const SnowSurface& g = snow_surface(h.sim, h.ground_surface);
     surface_exposure(m, g, exposure);
     ASSERT_EQ(exposure.size(), g.cell_count());

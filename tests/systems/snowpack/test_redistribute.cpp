@@ -188,7 +188,7 @@ TEST(Redistribute, LevelBaseShortcutMovesTheSameSnow) {
             level.put(n % 48, n / 48, units);
             general.put(n % 48, n / 48, units);
         }
-        const std::vector<std::uint32_t> put = level.s().snow;
+        const Vector<std::uint32_t> put = level.s().snow;
         for (int tick = 0; tick < 40; ++tick) {
             redistribute_system(InternalAccess::world(level.sim));
             redistribute_system(InternalAccess::world(general.sim));
