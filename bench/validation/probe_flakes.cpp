@@ -47,12 +47,12 @@ std::vector<Flake> falling_flakes(const Plan& plan) {
 /// Sizes the rows look at (mm); a bin is D/1.25 .. D·1.25.
 constexpr double sizes_mm[] = {2.0, 5.0, 10.0};
 
-template <typename Value>
-double median_in_bin(const std::vector<Flake>& flakes, double d_mm, const Value& value) {
+/// Median of `value` among the flakes of size d_mm (±25 %), NaN when there is none.
+double median_in_bin(const std::vector<Flake>& flakes, double d_mm, double Flake::*value) {
     std::vector<double> v;
     for (const Flake& f : flakes) {
         if (f.d_mm >= d_mm / 1.25 && f.d_mm < d_mm * 1.25) {
-            v.push_back(value(f));
+            v.push_back(f.*value);
         }
     }
     if (v.empty()) {
@@ -62,47 +62,48 @@ double median_in_bin(const std::vector<Flake>& flakes, double d_mm, const Value&
     return v[v.size() / 2];
 }
 
-std::string number(const char* format, double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
+/// A power law of [LH74], coefficient·D^exponent in `unit`.
+struct PowerLaw {
+    const char* quantity;
+    double coefficient, exponent;
+    const char* unit;
+    double low, high; ///< the band, as factors of the law's value
+};
+
+/// One row per size of sizes_mm: the median of `value` there against the law.
+std::vector<Row> law_rows(const std::vector<Flake>& flakes, const PowerLaw& law,
+                          double Flake::*value) {
+    std::vector<Row> rows;
+    for (const double d : sizes_mm) {
+        const double expected = law.coefficient * std::pow(d, law.exponent);
+        rows.push_back({std::string(law.quantity) + ", D = " + number("%.0f", d) + " mm (median)",
+                        number("%g", law.coefficient) + "·D^" + number("%g", law.exponent) + " = " +
+                            number("%.2f", expected) + " " + law.unit + " [LH74]",
+                        "still air, default emitter", median_in_bin(flakes, d, value), law.unit,
+                        law.low * expected, law.high * expected});
+    }
+    return rows;
 }
 
 } // namespace
 
 std::vector<Row> fall_speed_by_size(const Plan& plan) {
     const std::vector<Flake> flakes = falling_flakes(plan);
-    std::vector<Row> rows;
-    for (const double d : sizes_mm) {
-        const double v = 0.8 * std::pow(d, 0.16);
-        rows.push_back({"fall speed, D = " + number("%.0f", d) + " mm (median)",
-                        "0.8·D^0.16 = " + number("%.2f", v) + " m/s [LH74]",
-                        "still air, default emitter",
-                        median_in_bin(flakes, d, [](const Flake& f) { return f.speed; }), "m/s",
-                        0.8 * v, 1.2 * v});
-    }
+    std::vector<Row> rows =
+        law_rows(flakes, {"fall speed", 0.8, 0.16, "m/s", 0.8, 1.2}, &Flake::speed);
     // The size dependence alone: big flakes fall faster than small ones.
-    const auto speed = [](const Flake& f) { return f.speed; };
     const double ratio = std::pow(5.0, 0.16);
-    rows.push_back({"fall speed, D = 10 mm over D = 2 mm",
-                    "5^0.16 = " + number("%.2f", ratio) + " [LH74]", "still air, default emitter",
-                    median_in_bin(flakes, 10.0, speed) / median_in_bin(flakes, 2.0, speed), "",
-                    1.0 + 0.5 * (ratio - 1.0), 1.0 + 1.5 * (ratio - 1.0)});
+    rows.push_back(
+        {"fall speed, D = 10 mm over D = 2 mm", "5^0.16 = " + number("%.2f", ratio) + " [LH74]",
+         "still air, default emitter",
+         median_in_bin(flakes, 10.0, &Flake::speed) / median_in_bin(flakes, 2.0, &Flake::speed), "",
+         1.0 + 0.5 * (ratio - 1.0), 1.0 + 1.5 * (ratio - 1.0)});
     return rows;
 }
 
 std::vector<Row> flake_mass_by_size(const Plan& plan) {
-    const std::vector<Flake> flakes = falling_flakes(plan);
-    std::vector<Row> rows;
-    for (const double d : sizes_mm) {
-        const double m = 0.073 * std::pow(d, 1.4);
-        rows.push_back({"flake mass, D = " + number("%.0f", d) + " mm (median)",
-                        "0.073·D^1.4 = " + number("%.2f", m) + " mg [LH74]",
-                        "still air, default emitter",
-                        median_in_bin(flakes, d, [](const Flake& f) { return f.mass_mg; }), "mg",
-                        0.5 * m, 2.0 * m});
-    }
-    return rows;
+    return law_rows(falling_flakes(plan), {"flake mass", 0.073, 1.4, "mg", 0.5, 2.0},
+                    &Flake::mass_mg);
 }
 
 } // namespace snow::validation

@@ -19,12 +19,6 @@ namespace snow::validation {
 
 namespace {
 
-std::string number(const char* format, double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
-}
-
 /// kg of snow a grid holds per m² of its horizontal area.
 double load(const SnowGrid& g) {
     std::uint64_t units = 0;

@@ -4,6 +4,7 @@
 /// the source's scatter allows.
 #pragma once
 
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +20,13 @@ struct Row {
     double low = 0.0, high = 0.0; ///< the pass band, in `unit`
     [[nodiscard]] bool pass() const { return ours >= low && ours <= high; }
 };
+
+/// `v` printed with a printf `format` (one number).
+inline std::string number(const char* format, double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, v);
+    return text;
+}
 
 /// How long the probes simulate: `quick` is a seconds-long smoke run whose
 /// numbers are not for the table.

@@ -4,6 +4,7 @@
 // it also replaces the global operator new, to count what does not go
 // through the hook.
 #include "systems/api/simulation_internals.hpp"
+#include "tests/support/counted_new.hpp"
 #include "tests/support/share_work.hpp"
 
 #include <snow/allocator.hpp>
@@ -22,29 +23,7 @@
 
 namespace {
 
-// -- the global operator new, counted while `counting_new` is set --
-
-std::atomic<bool> counting_new{false};
-std::atomic<std::uint64_t> new_calls{0};
-
-void* malloc_aligned(std::size_t size, std::size_t alignment) noexcept {
-    size = size == 0 ? 1 : size;
-    if (alignment <= alignof(std::max_align_t)) {
-        return std::malloc(size);
-    }
-    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
-}
-
-void* counted_new(std::size_t size, std::size_t alignment) {
-    if (counting_new.load(std::memory_order_relaxed)) {
-        new_calls.fetch_add(1, std::memory_order_relaxed);
-    }
-    void* p = malloc_aligned(size, alignment);
-    if (p == nullptr) {
-        throw std::bad_alloc();
-    }
-    return p;
-}
+using snow::test::malloc_aligned;
 
 // -- the host's allocator: counts every call, takes its memory from malloc --
 
@@ -70,78 +49,11 @@ void counting_free(void* p, std::size_t size, std::size_t, void* user) {
 
 } // namespace
 
-// Every replaceable allocation form counts; every deallocation form frees.
-void* operator new(std::size_t n) {
-    return counted_new(n, 0);
-}
-void* operator new[](std::size_t n) {
-    return counted_new(n, 0);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-    return counted_new(n, static_cast<std::size_t>(a));
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-    return counted_new(n, static_cast<std::size_t>(a));
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(n, 0);
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept {
-    return operator new(n, t);
-}
-void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
-    try {
-        return counted_new(n, static_cast<std::size_t>(a));
-    } catch (const std::bad_alloc&) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t& t) noexcept {
-    return operator new(n, a, t);
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-
 namespace snow {
 namespace {
+
+using test::counting_new;
+using test::new_calls;
 
 /// Installs a counting allocator for one test and takes it out again (once
 /// the test destroyed every Simulation it made).

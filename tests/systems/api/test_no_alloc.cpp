@@ -1,5 +1,5 @@
 // No allocation inside a tick (issue #8), from the first: the global
-// operator new is replaced by one that counts calls while `counting` is set;
+// operator new is replaced by one that counts calls while `counting_new` is set;
 // ticks of a scene in which every system runs and does real work (flakes
 // spawn, land, roll, smooth, spill, hit the sphere, and the sky map refreshes
 // as the wind turns) must make none, on 1 and on 2 threads. The Simulation
@@ -8,107 +8,19 @@
 // allocator on the village.
 #include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
+#include "tests/support/counted_new.hpp"
 #include "tests/support/share_work.hpp"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdint>
-#include <cstdlib>
-#include <new>
 #include <vector>
-
-namespace {
-
-std::atomic<bool> counting{false};
-std::atomic<std::uint64_t> allocations{0};
-
-void* counted_alloc(std::size_t size, std::size_t align) noexcept {
-    if (counting.load(std::memory_order_relaxed)) {
-        allocations.fetch_add(1, std::memory_order_relaxed);
-    }
-    size = size == 0 ? 1 : size;
-    if (align <= alignof(std::max_align_t)) {
-        return std::malloc(size);
-    }
-    return std::aligned_alloc(align, (size + align - 1) / align * align);
-}
-
-void* counted_alloc_or_throw(std::size_t size, std::size_t align) {
-    void* p = counted_alloc(size, align);
-    if (p == nullptr) {
-        throw std::bad_alloc();
-    }
-    return p;
-}
-
-} // namespace
-
-// Every replaceable allocation form routes through counted_alloc; every
-// deallocation form frees with std::free (malloc and aligned_alloc agree).
-void* operator new(std::size_t n) {
-    return counted_alloc_or_throw(n, 0);
-}
-void* operator new[](std::size_t n) {
-    return counted_alloc_or_throw(n, 0);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-    return counted_alloc_or_throw(n, static_cast<std::size_t>(a));
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-    return counted_alloc_or_throw(n, static_cast<std::size_t>(a));
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    return counted_alloc(n, 0);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    return counted_alloc(n, 0);
-}
-void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
-    return counted_alloc(n, static_cast<std::size_t>(a));
-}
-void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
-    return counted_alloc(n, static_cast<std::size_t>(a));
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
-}
 
 namespace snow {
 namespace {
+
+using test::counting_new;
+using test::new_calls;
 
 /// Puts snow over the edge limit along one border of every spilling surface
 /// (as an embedder might), so the next tick spills.
@@ -151,11 +63,11 @@ TEST(NoAllocation, TicksWithEverySystemAllocateNothingFromTheFirst) {
         for (const SystemStats& s : schedule_of(*sim).stats()) {
             calls.push_back(s.calls);
         }
-        allocations = 0;
-        counting = true;
+        new_calls = 0;
+        counting_new = true;
         sim->run(ticks);
-        counting = false;
-        EXPECT_EQ(allocations.load(), 0u) << threads << " thread(s)";
+        counting_new = false;
+        EXPECT_EQ(new_calls.load(), 0u) << threads << " thread(s)";
 
         // Every system ran in the counted ticks, and did work.
         const auto& stats = schedule_of(*sim).stats();
@@ -176,12 +88,12 @@ TEST(NoAllocation, TicksWithEverySystemAllocateNothingFromTheFirst) {
 
 TEST(NoAllocation, CounterSeesAllocations) {
     // The instrument works: a vector growing under counting is seen.
-    allocations = 0;
-    counting = true;
+    new_calls = 0;
+    counting_new = true;
     std::vector<int> v;
     v.resize(1000);
-    counting = false;
-    EXPECT_GE(allocations.load(), 1u);
+    counting_new = false;
+    EXPECT_GE(new_calls.load(), 1u);
 }
 
 } // namespace
