@@ -14,9 +14,9 @@
 
 namespace snow {
 
-/// The host's allocation functions. Both may be called from any thread
-/// (a Simulation's constructor and edit calls, and tasks of other
-/// Simulations), so they must be thread-safe.
+/// The host's allocation functions. Both may be called from several threads
+/// at once (two Simulations built or changed on two threads), so they must
+/// be thread-safe.
 struct Allocator {
     /// `size` bytes (> 0) aligned to `alignment` (a power of two, up to the
     /// 2 MiB of the flake pool's large arrays); null when the host has
