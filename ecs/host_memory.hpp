@@ -47,9 +47,8 @@ using String = std::basic_string<char, std::char_traits<char>, HostAllocator<cha
 /// Base of the classes snow creates with new and deletes through a pointer
 /// (the Simulation's pimpl, the World's component pools, the built-in job
 /// pool, in-memory snapshots): their new and delete go through the host's
-/// allocator. A class
-/// deleted through a base pointer needs a virtual destructor, so delete
-/// passes the size of what was made.
+/// allocator. A class deleted through a base pointer needs a virtual
+/// destructor, so delete passes the size of what was made.
 struct HostAllocated {
     static void* operator new(std::size_t size) {
         return host_allocate(size, __STDCPP_DEFAULT_NEW_ALIGNMENT__);
