@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 namespace snow::validation {
 
@@ -87,7 +88,8 @@ std::vector<Row> law_rows(const std::vector<Flake>& flakes, const PowerLaw& law,
 
 } // namespace
 
-std::vector<Row> fall_speed_by_size(const Plan& plan) {
+// One snowfall gives both the speed and the mass rows.
+std::vector<Row> flakes_by_size(const Plan& plan) {
     const std::vector<Flake> flakes = falling_flakes(plan);
     std::vector<Row> rows =
         law_rows(flakes, {"fall speed", 0.8, 0.16, "m/s", 0.8, 1.2}, &Flake::speed);
@@ -98,12 +100,10 @@ std::vector<Row> fall_speed_by_size(const Plan& plan) {
          "still air, default emitter",
          median_in_bin(flakes, 10.0, &Flake::speed) / median_in_bin(flakes, 2.0, &Flake::speed), "",
          1.0 + 0.5 * (ratio - 1.0), 1.0 + 1.5 * (ratio - 1.0)});
+    for (Row& r : law_rows(flakes, {"flake mass", 0.073, 1.4, "mg", 0.5, 2.0}, &Flake::mass_mg)) {
+        rows.push_back(std::move(r));
+    }
     return rows;
-}
-
-std::vector<Row> flake_mass_by_size(const Plan& plan) {
-    return law_rows(falling_flakes(plan), {"flake mass", 0.073, 1.4, "mg", 0.5, 2.0},
-                    &Flake::mass_mg);
 }
 
 } // namespace snow::validation

@@ -57,8 +57,9 @@ int main(int argc, char** argv) {
         }
     }
     const Probe probes[] = {
-        {"fall speed by size", fall_speed_by_size}, {"flake mass by size", flake_mass_by_size},
-        {"fresh snow density", fresh_snow_density}, {"pile flank angle", pile_flank_angle},
+        {"fall speed and mass by size", flakes_by_size},
+        {"fresh snow density", fresh_snow_density},
+        {"pile flank angle", pile_flank_angle},
         {"roof load by pitch", roof_load_by_pitch},
     };
     try {

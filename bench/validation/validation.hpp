@@ -40,8 +40,8 @@ struct Probe {
     std::function<std::vector<Row>(const Plan&)> run;
 };
 
-[[nodiscard]] std::vector<Row> fall_speed_by_size(const Plan& plan);
-[[nodiscard]] std::vector<Row> flake_mass_by_size(const Plan& plan);
+/// Fall speed and mass by size, from one still-air snowfall [LH74].
+[[nodiscard]] std::vector<Row> flakes_by_size(const Plan& plan);
 [[nodiscard]] std::vector<Row> fresh_snow_density(const Plan& plan);
 [[nodiscard]] std::vector<Row> pile_flank_angle(const Plan& plan);
 [[nodiscard]] std::vector<Row> roof_load_by_pitch(const Plan& plan);
