@@ -5,7 +5,7 @@
 
 Writes two variants of assets/scenes/village.gltf into BUILD/lee/ that differ
 only in extras.snow.wind.field (none, or 64 x 16 x 64 cells), both with a
-storm's snowfall (40 000 flakes/s, 13 x the scene's) so the snow is deep
+fast-forwarded snowfall (200 kg/m2/h, 13 x the scene's) so the snow is deep
 enough to read; runs `snow_run --export-depth` on each for the same simulated
 time and seed; and draws the ground's depth around the garage, seen from
 above, in one colour scale: OUT/lee_without_field.png, OUT/lee_with_field.png
@@ -23,7 +23,8 @@ import zlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-SNOWFALL = 40000.0  # flakes/s
+SNOWFALL = 200.0  # kg/m2/h
+PARCELS = 40000.0  # parcels/s: enough to carry it
 FIELD = {"cells": [64, 16, 64]}
 # World rectangle drawn (x0, z0, x1, z1): the garage (x 3..7, z -3..0) and its lee
 # up to the ground's edge.
@@ -36,7 +37,8 @@ SCALE = 4  # pixels per cell
 def scene_variant(field):
     doc = json.loads((ROOT / "assets" / "scenes" / "village.gltf").read_text())
     snow = doc["scenes"][0]["extras"]["snow"]
-    snow["emitter"]["rate"] = SNOWFALL
+    snow["emitter"]["rate"] = PARCELS
+    snow["emitter"]["snowfall_kg_m2_h"] = SNOWFALL
     if field:
         snow["wind"]["field"] = FIELD
     return doc

@@ -216,8 +216,10 @@ def point_light(name, rgb, intensity):
 
 DT = 1.0 / 60.0
 GROUND = {"surface": {"cell": 0.1, "edge_limit": 0.1, "spills": False}}
-EMITTER = {"rate": 3000.0, "mass_min_g": 0.005, "mass_max_g": 5.0, "size_min": 0.002,
-           "size_max": 0.0254, "fall_speed_min": 0.5, "fall_speed_max": 1.5}
+# A storm's heaviest hour, 15 kg/m²/h (about 15 cm/h of fresh snow), of
+# unrimed dendrite aggregates 1-20 mm across (docs/references.md [GM58], [LH74]).
+EMITTER = {"rate": 3000.0, "snowfall_kg_m2_h": 15.0, "crystal": "dendrite_aggregate",
+           "size_mean": 0.004, "size_min": 0.001, "size_max": 0.02}
 CAMERA = {"position": [1.0, 6.0, 17.0], "target": [0.0, 1.5, -1.0], "fov_y_deg": 50.0,
           "near_plane": 0.05, "far_plane": 200.0}
 ENVIRONMENT = {"ambient": [0.18, 0.2, 0.24], "sky": [0.55, 0.62, 0.7]}
@@ -240,9 +242,10 @@ def village(effects):
     m_wood = g.material("wood", (0.45, 0.32, 0.2))
     m_snowman = g.material("snowman", (0.95, 0.95, 0.97))
 
-    # Slate sheds: a line down a roof side holding more than 3 cm slides off
+    # Smooth cold slate sheds: little friction and adhesion, so a line down a
+    # roof side holding more than about 3 kg/m² (3 cm of fresh snow) slides off
     # its eave as one slab (the west side onto the ground, the east onto the porch).
-    roof_cell = {"cell": 0.1, "edge_limit": 0.005, "slide_depth": 0.03}
+    roof_cell = {"cell": 0.1, "edge_limit": 0.005, "slide_friction": 0.2, "slide_adhesion": 8.0}
     ground = g.node("ground", g.mesh("ground", box, m_ground), translation=[0.0, -0.1, 0.0],
                     scale=[20.0, 0.2, 20.0], snow=GROUND)
     walls = g.node("house walls", g.mesh("walls", box, m_wall), translation=[0.0, 1.5, 0.0],
@@ -422,7 +425,7 @@ def minimal():
                                      g.material("ground", (0.42, 0.4, 0.36))),
                     translation=[0.0, -0.1, 0.0], scale=[10.0, 0.2, 10.0], snow=GROUND)
     snow = {"simulation": {"dt": DT, "seed": 1, "max_flakes": 5000},
-            "emitter": dict(EMITTER, rate=1000.0)}
+            "emitter": dict(EMITTER, rate=1000.0, snowfall_kg_m2_h=5.0)}
     return g.document("minimal", [ground], snow)
 
 

@@ -29,8 +29,9 @@ struct GameOptions {
     /// The camera to start with; default walk where the scene has snow ground
     /// (a cover or a surface on no solid), else fly.
     std::optional<CameraMode> camera;
-    std::uint32_t time_scale = 1;    ///< simulated time per frame: 1, 4, 16 or 64 ×
-    std::optional<float> snowfall;   ///< every emitter's rate (flakes/s)
+    std::uint32_t time_scale = 1; ///< simulated time per frame: 1, 4, 16 or 64 ×
+    std::optional<float>
+        snowfall; ///< every emitter's snowfall (kg/m²/h); its rate rises to carry it
     std::uint32_t contact_sheet = 0; ///< headless: moments in <out>/contact_sheet.png
     /// The player takes the place of the scene's walker (its first body with
     /// a path): it stands at the path's start until this frame, then walks

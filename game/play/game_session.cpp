@@ -4,6 +4,8 @@
 #include "game/app/builtin_scene.hpp"
 #include "game/play/quality.hpp"
 #include "game/play/snow_readout.hpp"
+#include "systems/core/limits.hpp"
+#include "systems/flakes/snowfall.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -73,11 +75,7 @@ bool GameSession::load() {
         camera_->set_mode(opt_.camera.value_or(walkable ? CameraMode::walk : CameraMode::fly));
     }
     if (opt_.snowfall) {
-        std::vector<EmitterId> emitters;
-        w.each<Emitter>([&](Entity e, const Emitter&) { emitters.push_back(id_of<EmitterId>(e)); });
-        for (const EmitterId e : emitters) {
-            sim_->set_emitter_rate(e, *opt_.snowfall);
-        }
+        set_snowfall([&](const Emitter&) { return *opt_.snowfall; });
     }
     route_.reset();
     if (opt_.walk_once_at) {
@@ -171,17 +169,29 @@ void GameSession::next_camera() {
     say(std::string(camera_mode_name(mode)) + " camera");
 }
 
-void GameSession::change_snowfall(float factor) {
-    std::vector<std::pair<EmitterId, float>> rates;
+Emitter GameSession::set_snowfall(const std::function<float(const Emitter&)>& snowfall) {
+    const glm::vec3 size = sim_->config().bounds.size();
+    std::vector<std::pair<EmitterId, Emitter>> changed;
     world_of(*sim_).each<Emitter>([&](Entity e, const Emitter& em) {
-        rates.emplace_back(id_of<EmitterId>(e), std::clamp(em.rate * factor, 10.0f, 1.0e6f));
+        changed.emplace_back(
+            id_of<EmitterId>(e),
+            with_snowfall(em,
+                          std::clamp(snowfall(em), 0.0f, static_cast<float>(max_snowfall_kg_m2_h)),
+                          static_cast<double>(size.x) * size.z));
     });
-    float rate = 0.0f;
-    for (const auto& [emitter, new_rate] : rates) {
-        sim_->set_emitter_rate(emitter, new_rate);
-        rate = new_rate;
+    for (const auto& [id, emitter] : changed) {
+        sim_->set_emitter(id, emitter);
     }
-    say("snowfall " + std::to_string(static_cast<int>(rate)) + " flakes/s");
+    return changed.empty() ? Emitter{} : changed.back().second;
+}
+
+void GameSession::change_snowfall(float factor) {
+    const Emitter last =
+        set_snowfall([&](const Emitter& e) { return e.snowfall_kg_m2_h * factor; });
+    char text[96];
+    std::snprintf(text, sizeof text, "snowfall %.3g kg/m²/h (%.0f parcels/s)",
+                  static_cast<double>(last.snowfall_kg_m2_h), static_cast<double>(last.rate));
+    say(text);
 }
 
 void GameSession::change_wind(Action a) {

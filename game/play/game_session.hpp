@@ -20,6 +20,7 @@
 #include <snow/snow.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -76,6 +77,9 @@ class GameSession {
     /// removed first: the start holds only the bodies it was saved with.
     void reset_to_start();
     void next_camera();
+    /// Every emitter's snowfall becomes `snowfall(emitter)` (kg/m²/h, within
+    /// the limits), its rate raised to carry it; returns the last emitter.
+    Emitter set_snowfall(const std::function<float(const Emitter&)>& snowfall);
     void change_snowfall(float factor);
     void change_wind(Action a);
     /// The walk camera's player, made where the camera stands if there is none.

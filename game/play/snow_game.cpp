@@ -4,6 +4,7 @@
 #include "game/play/game_options.hpp"
 #include "game/play/quality.hpp"
 #include "game/play/time_scale.hpp"
+#include "systems/core/limits.hpp"
 
 #include <cstdio>
 #include <stdexcept>
@@ -23,7 +24,8 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
   --camera MODE       walk | fly | orbit (default walk where the scene has a cover
                       or a ground surface, else fly)
   --time-scale N      simulated time per frame: 1, 4, 16 or 64 times (key T)
-  --snowfall RATE     every emitter's rate, flakes/s (0 < RATE <= 1000000)
+  --snowfall KG       every emitter's snowfall, kg/m²/h (0 < KG <= 10000): 3 is
+                      heavy snow, 15 a storm's heaviest hour; more fast-forwards
   --walk-once-at F    the player takes the scene walker's place: it waits at its
                       path's start until frame F, then walks the path once
   --bare-meshes       meshes keep their colour: only the simulated snow is white
@@ -33,7 +35,7 @@ constexpr const char* usage_head = R"(usage: snow_game [options]
   --contact-sheet N   headless: N moments (2..16) of the run in DIR/contact_sheet.png
   --timelapse         the village storm as a headless time-lapse: --headless
                       --frames 120 --size 640x360 --quality low --time-scale 64
-                      --snowfall 40000 --max-flakes 400000 --wind 0,0,-2.5
+                      --snowfall 200 --max-flakes 400000 --wind 0,0,-2.5
                       --camera fly --look-from 0,4.5,8.5 --look-at 1.8,1,-1
                       --walk-once-at 55 --contact-sheet 8 --video --bare-meshes
                       --min-snow-depth 0.008 --out out/timelapse (flags after it
@@ -98,7 +100,8 @@ bool read_flag(std::string_view f, snow::cli::ArgReader& args, snow::GameOptions
         }
         o.time_scale = n;
     } else if (f == "--snowfall") {
-        o.snowfall = static_cast<float>(parse_positive(f, args.value(), 1.0e6));
+        o.snowfall =
+            static_cast<float>(parse_positive(f, args.value(), snow::max_snowfall_kg_m2_h));
     } else if (f == "--walk-once-at") {
         o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
     } else if (f == "--bare-meshes") {

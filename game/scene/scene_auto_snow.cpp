@@ -4,6 +4,8 @@
 // through the same build path (build_scene) as declared ones.
 #include "game/scene/scene_auto_snow.hpp"
 
+#include "systems/flakes/snowfall.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -54,10 +56,14 @@ OcclusionCamera occlusion_for(const Aabb& bounds, float cover_cell) {
 Emitter emitter_for(const SimConfig& config) {
     Emitter e;
     const glm::vec3 size = config.bounds.size();
-    const float mean_fall_speed = 0.5f * (e.fall_speed_min + e.fall_speed_max);
+    const auto mean_fall_speed = static_cast<float>(spectrum_means(e).fall_speed);
     const float fall_seconds = std::max(size.y, 1.0f) / mean_fall_speed;
     e.rate = std::min(auto_flakes_per_m2_s * size.x * size.z,
                       0.5f * static_cast<float>(config.max_flakes) / fall_seconds);
+    // Parcels hold at most max_flake_units: over a footprint too large for the
+    // pool it snows more lightly instead of overfilling the pool.
+    e.snowfall_kg_m2_h = std::min(
+        e.snowfall_kg_m2_h, heaviest_snowfall_kg_m2_h(e, static_cast<double>(size.x) * size.z));
     return e;
 }
 

@@ -18,7 +18,7 @@ namespace snow {
 /// cover has at most `auto_cover_cells_per_side` cells along its longer side.
 inline constexpr float auto_cover_min_cell = 0.05f;
 inline constexpr std::uint32_t auto_cover_cells_per_side = 1024;
-/// Snowfall of the auto emitter: the village's 2000 flakes/s over 20 × 20 m.
+/// Parcels a second per m² of the auto emitter: the default rate over 20 × 20 m.
 inline constexpr float auto_flakes_per_m2_s = 5.0f;
 
 /// The bounds of every instanced node's triangles; none when no node has any.

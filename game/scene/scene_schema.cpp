@@ -90,7 +90,15 @@ constexpr std::string_view simulation_unread[] = {"smoothing_iterations"};
 constexpr Schema<SimConfig> simulation_schema{sim_config_fields, simulation_rows,
                                               simulation_unread};
 
-constexpr Schema<Emitter> emitter_schema{emitter_fields};
+constexpr std::pair<std::string_view, CrystalType> crystal_types[] = {
+    {"dendrite_aggregate", CrystalType::dendrite_aggregate},
+    {"rimed_aggregate", CrystalType::rimed_aggregate}};
+
+constexpr Field<Emitter> emitter_rows[] = {
+    {"crystal", +[](const Json& j, const std::string& field, Emitter& e) {
+         e.crystal = read_choice(j, field, crystal_types);
+     }}};
+constexpr Schema<Emitter> emitter_schema{emitter_fields, emitter_rows};
 
 constexpr Field<Wind> wind_rows[] = {
     {"base",

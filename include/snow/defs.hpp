@@ -53,16 +53,25 @@ struct SimConfig {
     std::uint32_t smoothing_iterations = 64;
 };
 
+/// The particle types an emitter can make, each with its own mass and fall
+/// speed by size (Locatelli & Hobbs 1974, Table 1; docs/references.md [LH74]).
+enum class CrystalType : std::uint8_t {
+    dendrite_aggregate, ///< aggregates of unrimed radiating assemblages of dendrites
+    rimed_aggregate,    ///< aggregates of densely rimed radiating assemblages of dendrites
+};
+
 /// Component. Flakes appear on the top and the upwind sides of the
-/// simulation bounds [WF §5], with mass and size drawn uniformly.
+/// simulation bounds [WF §5]. Each simulated flake is a parcel standing for
+/// many real flakes of one size: sizes follow the exponential spectrum of
+/// snowfall [GM58], mass and fall speed follow the size [LH74], and the
+/// parcels together carry the declared snowfall.
 struct Emitter {
-    float rate = 2000.0f;        ///< expected flakes per second
-    float mass_min_g = 0.005f;   ///< [WF §3]: 0.005 g ..
-    float mass_max_g = 5.0f;     ///< .. 5 g
-    float size_min = 0.002f;     ///< diameter (m)
-    float size_max = 0.0254f;    ///< [WF §3]: common 0.0254 m
-    float fall_speed_min = 0.5f; ///< terminal speed in still air (m/s); sets k/m = g / v
-    float fall_speed_max = 1.5f;
+    float rate = 2000.0f;          ///< parcels per second: the cost, not the amount of snow
+    float snowfall_kg_m2_h = 3.0f; ///< snow reaching the ground (kg/m²/h = mm/h of water)
+    CrystalType crystal = CrystalType::dendrite_aggregate;
+    float size_mean = 0.004f; ///< 1/Λ of the spectrum N0·e^(−ΛD) (m)
+    float size_min = 0.001f;  ///< sizes are clipped to [size_min, size_max] (m)
+    float size_max = 0.02f;
 };
 
 /// One airborne flake placed by hand (Simulation::place_flake): tests,
@@ -123,10 +132,11 @@ struct SurfaceDef {
     float edge_limit = 0.1f;            ///< snow depth (m) at an edge above which excess spills
     bool spills = true;                 ///< false for the ground: its edges keep their snow
     float laplacian_limit = 20.0f;      ///< cap on |∇²h| (1/m), [WF §3]
-    /// Tilted tops: a line of cells down the slope that holds more than this
-    /// mean depth (m) slides off its low edge as one slab (a roof shedding
-    /// its snow); 0 = it never slides. Needs a slope and spills.
-    float slide_depth = 0.0f;
+    /// Tilted tops that spill: snow holds on by friction and adhesion; a line
+    /// of cells down the slope whose weight along the slope beats both
+    /// slides off its low edge as one slab (a roof shedding its snow).
+    float slide_friction = 0.85f; ///< μ between snow and this surface (tan of the friction angle)
+    float slide_adhesion = 18.0f; ///< shear (Pa) the snow's bond to the surface holds
     /// Angle of repose (degrees): snow on steeper slopes of its total height
     /// slides down. Loose dry snow stands at 37–53° (docs/references.md [NSA]).
     float repose_deg = 45.0f;

@@ -38,8 +38,10 @@ class Simulation {
 
     // -- building the scene --
     EmitterId add_emitter(const Emitter& e);
-    /// Changes one emitter's rate (flakes per second), same rules as Emitter::rate.
+    /// Changes one emitter's rate (parcels per second), same rules as Emitter::rate.
     void set_emitter_rate(EmitterId emitter, float rate);
+    /// Replaces all of one emitter's settings, same rules as add_emitter().
+    void set_emitter(EmitterId emitter, const Emitter& e);
     void set_wind(const Wind& w);
     void clear_wind();
     /// A wind field over the bounds that the colliders shape; the global wind

@@ -6,6 +6,7 @@
 #include "render/visual_rules.hpp"
 #include "systems/core/sim_config.hpp"
 #include "systems/flakes/emitter.hpp"
+#include "systems/flakes/snowfall.hpp"
 #include "systems/wind/wind.hpp"
 
 #include <glm/geometric.hpp>
@@ -74,12 +75,11 @@ float particle_fall_speed(const World& world) {
     double sum = 0.0;
     int count = 0;
     world.each<Emitter>([&](Entity, const Emitter& e) {
-        sum += 0.5 * (static_cast<double>(e.fall_speed_min) + e.fall_speed_max);
+        sum += spectrum_means(e).fall_speed;
         ++count;
     });
     if (count == 0) {
-        const Emitter defaults;
-        return 0.5f * (defaults.fall_speed_min + defaults.fall_speed_max);
+        return static_cast<float>(spectrum_means(Emitter{}).fall_speed);
     }
     const double mean = sum / count;
     return std::isfinite(mean) && mean > 0.0 ? static_cast<float>(mean) : 1.0f;

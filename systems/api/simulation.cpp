@@ -176,7 +176,7 @@ void Simulation::Impl::prepare() {
 }
 
 EmitterId Simulation::add_emitter(const Emitter& e) {
-    throw_if(validate(e));
+    throw_if(validate(e, impl_->world.resource<SimConfig>().bounds));
     const Entity id = impl_->world.create();
     impl_->world.add<Emitter>(id, e);
     return id_of<EmitterId>(id);
@@ -187,8 +187,15 @@ void Simulation::set_emitter_rate(EmitterId emitter, float rate) {
                                        "set_emitter_rate(emitter)", "emitter");
     Emitter changed = e;
     changed.rate = rate;
-    throw_if(validate(changed));
+    throw_if(validate(changed, impl_->world.resource<SimConfig>().bounds));
     e = changed;
+}
+
+void Simulation::set_emitter(EmitterId emitter, const Emitter& e) {
+    Emitter& current =
+        component_of<Emitter>(impl_->world, entity_of(emitter), "set_emitter(emitter)", "emitter");
+    throw_if(validate(e, impl_->world.resource<SimConfig>().bounds));
+    current = e;
 }
 
 void Simulation::set_wind(const Wind& w) {

@@ -60,8 +60,9 @@ std::uint64_t source_digest(const World& w) {
         h.value(s.edge_limit_units);
         h.value(s.laplacian_limit_units);
         h.value(s.talus_units);
-        if (s.slide_units != 0) { // a surface that never slides hashes as before the rule
-            h.value(s.slide_units);
+        if (s.slide_drive > 0.0f) { // a surface that never slides hashes as before the rule
+            h.value(s.slide_drive);
+            h.value(s.slide_adhesion);
             h.value(s.slide_along_x);
             h.value(s.slide_to_high);
         }

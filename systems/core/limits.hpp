@@ -18,11 +18,10 @@ inline constexpr std::uint32_t max_smoothing_iterations = 4096; ///< per surface
 
 // -- settings structs --
 inline constexpr double max_emitter_rate = 1.0e8; ///< flakes per second
-/// Flake masses an emitter may draw (g): one mass unit up to max_flake_units.
-inline constexpr double min_flake_mass_g = unit_kg * 1000.0;
-inline constexpr double max_flake_mass_g = min_flake_mass_g * max_flake_units;
+/// Heaviest declared snowfall (kg/m²/h): far past any storm, so a scene
+/// may fast-forward its weather.
+inline constexpr double max_snowfall_kg_m2_h = 1.0e4;
 inline constexpr double max_flake_size = 1.0;            ///< diameter (m)
-inline constexpr double max_fall_speed = 1000.0;         ///< m/s
 inline constexpr double max_wind_base_component = 200.0; ///< |wind.base.x|, .y, .z (m/s)
 
 // -- surfaces --

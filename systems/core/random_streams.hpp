@@ -8,14 +8,14 @@
 
 namespace snow::random_stream {
 
-inline constexpr std::uint32_t spawn_activate = 1;     ///< how many flakes an emitter starts
-inline constexpr std::uint32_t spawn_position = 2;     ///< where on the emitter a flake starts
-inline constexpr std::uint32_t spawn_mass = 3;         ///< a new flake's mass (and so its size)
-inline constexpr std::uint32_t spawn_velocity = 5;     ///< a new flake's fall speed
-inline constexpr std::uint32_t wind_walk = 6;          ///< the wind's bounded random walk
-inline constexpr std::uint32_t wind_gust = 7;          ///< whether a gust starts
-inline constexpr std::uint32_t roll = 8;               ///< the lower neighbour a landing rolls to
-inline constexpr std::uint32_t test = 1000;            ///< tests placing random flakes or colliders
+inline constexpr std::uint32_t spawn_activate = 1; ///< how many flakes an emitter starts
+inline constexpr std::uint32_t spawn_position = 2; ///< where on the emitter a flake starts
+inline constexpr std::uint32_t spawn_size = 3; ///< a new parcel's size (so its mass and fall speed)
+inline constexpr std::uint32_t spawn_rounding = 5; ///< a new parcel's mass rounded to whole units
+inline constexpr std::uint32_t wind_walk = 6;      ///< the wind's bounded random walk
+inline constexpr std::uint32_t wind_gust = 7;      ///< whether a gust starts
+inline constexpr std::uint32_t roll = 8;           ///< the lower neighbour a landing rolls to
+inline constexpr std::uint32_t test = 1000;        ///< tests placing random flakes or colliders
 inline constexpr std::uint32_t spectral_volume = 2000; ///< phases and speeds of far-field snow
 
 } // namespace snow::random_stream

@@ -120,15 +120,16 @@ bool path_near(const Aabb& b, float x, float y, float z, float x0, float y0, flo
 /// Result of the per-flake tests for a flake that is still inside the bounds.
 enum class Outcome : std::uint8_t { keep, sphere, bare };
 
-/// One of the solid's surfaces covers (x, z).
-bool covered(const Context& c, std::uint32_t begin, std::uint32_t end, float x, float z) {
+/// The snow top of the first of the solid's surfaces that covers (x, z), or
+/// NaN when none does.
+float covering_top(const Context& c, std::uint32_t begin, std::uint32_t end, float x, float z) {
     for (std::uint32_t i = begin; i < end; ++i) {
         std::uint32_t ix = 0, iz = 0;
         if (c.surfaces[i]->cell_at(x, z, ix, iz)) {
-            return true;
+            return c.surfaces[i]->top_y(c.surfaces[i]->index(ix, iz));
         }
     }
-    return false;
+    return std::numeric_limits<float>::quiet_NaN();
 }
 
 /// A flake met geometry at `at`. When that is the top of a cover's column
@@ -154,14 +155,18 @@ bool cover_catches(const Context& c, const glm::vec3& at, glm::vec3& p, glm::vec
 /// A flake reached the top of a solid at `at`: it waits there for the
 /// deposit system when a surface of the solid or a cover covers the spot,
 /// otherwise it lands on bare geometry and leaves the books (it would rest
-/// there forever).
+/// there forever). On a surface it waits no higher than the snow top of its
+/// cell, so the deposit system takes it: a tilted solid's top (a mesh roof
+/// through the sky map's texels) may lie above the cell's, and a flake held
+/// there would lie at rest on the bare roof for ever.
 Outcome land_on_top(const Context& c, std::uint32_t surf_begin, std::uint32_t surf_end,
                     const glm::vec3& at, glm::vec3& p, glm::vec3& v, bool& moved) {
-    if (!covered(c, surf_begin, surf_end, at.x, at.z)) {
+    const float snow_top = covering_top(c, surf_begin, surf_end, at.x, at.z);
+    if (std::isnan(snow_top)) {
         moved = cover_catches(c, at, p, v);
         return moved ? Outcome::keep : Outcome::bare;
     }
-    p = at;
+    p = {at.x, std::min(at.y, snow_top), at.z};
     v.y = 0.0f;
     moved = true;
     return Outcome::keep;

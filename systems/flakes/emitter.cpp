@@ -1,23 +1,47 @@
 #include "systems/flakes/emitter.hpp"
 
 #include "ecs/state_hash.hpp"
+#include "systems/core/units.hpp"
+#include "systems/flakes/snowfall.hpp"
+
+#include <cmath>
 
 namespace snow {
 
 Invalid validate(const Emitter& m) {
     Invalid e = check_fields("emitter", emitter_fields, m);
-    check::ordered(e, "emitter", "mass_min_g", m.mass_min_g, "mass_max_g", m.mass_max_g);
     check::ordered(e, "emitter", "size_min", m.size_min, "size_max", m.size_max);
-    check::ordered(e, "emitter", "fall_speed_min", m.fall_speed_min, "fall_speed_max",
-                   m.fall_speed_max);
+    if (e.empty() && m.crystal != CrystalType::dendrite_aggregate &&
+        m.crystal != CrystalType::rimed_aggregate) {
+        check::fail(e, "emitter.crystal", "a CrystalType", static_cast<double>(m.crystal));
+    }
+    return e;
+}
+
+Invalid validate(const Emitter& m, const Aabb& bounds) {
+    Invalid e = validate(m);
+    if (!e.empty()) {
+        return e;
+    }
+    const glm::vec3 size = bounds.size();
+    const double needed = min_parcel_rate(m, static_cast<double>(size.x) * size.z);
+    // A parcel of exactly max_flake_units is fine (spawn never rounds past
+    // it): the tolerance only absorbs the last bit of the quotient.
+    if (m.rate > 0.0f && m.rate < needed * (1.0 - 1e-9)) {
+        check::fail(e, "emitter.rate",
+                    ">= " + std::to_string(static_cast<long long>(std::ceil(needed))) +
+                        " parcels/s for this snowfall over the bounds (each parcel holds at most " +
+                        std::to_string(max_flake_units) + " mass units)",
+                    m.rate);
+    }
     return e;
 }
 
 void hash_state(StateHasher& h, const Emitter& m) {
-    for (const float v : {m.rate, m.mass_min_g, m.mass_max_g, m.size_min, m.size_max,
-                          m.fall_speed_min, m.fall_speed_max}) {
+    for (const float v : {m.rate, m.snowfall_kg_m2_h, m.size_mean, m.size_min, m.size_max}) {
         h.value(v);
     }
+    h.value(static_cast<std::uint8_t>(m.crystal));
 }
 
 } // namespace snow

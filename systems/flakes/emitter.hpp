@@ -13,17 +13,20 @@ class StateHasher;
 /// Every setting of the emitter (the host may change its rate).
 void hash_state(StateHasher& h, const Emitter& m);
 
-/// `emitter.*`; each min <= its max is checked by validate().
+/// `emitter.*` (`crystal` is a choice the scene reads by name); each
+/// min <= its max is checked by validate().
 inline constexpr FieldRule<Emitter> emitter_fields[] = {
     {"rate", &Emitter::rate, between(0, max_emitter_rate)},
-    {"mass_min_g", &Emitter::mass_min_g, between(min_flake_mass_g, max_flake_mass_g)},
-    {"mass_max_g", &Emitter::mass_max_g, between(min_flake_mass_g, max_flake_mass_g)},
+    {"snowfall_kg_m2_h", &Emitter::snowfall_kg_m2_h, between(0, max_snowfall_kg_m2_h)},
+    {"size_mean", &Emitter::size_mean, positive_up_to(max_flake_size)},
     {"size_min", &Emitter::size_min, positive_up_to(max_flake_size)},
     {"size_max", &Emitter::size_max, positive_up_to(max_flake_size)},
-    {"fall_speed_min", &Emitter::fall_speed_min, positive_up_to(max_fall_speed)},
-    {"fall_speed_max", &Emitter::fall_speed_max, positive_up_to(max_fall_speed)},
 };
 
 [[nodiscard]] Invalid validate(const Emitter& e);
+
+/// validate(), and that the emitter's parcels fit in a flake over `bounds`:
+/// the heaviest parcel (size_max) may carry at most max_flake_units.
+[[nodiscard]] Invalid validate(const Emitter& e, const Aabb& bounds);
 
 } // namespace snow

@@ -1,6 +1,7 @@
 // spawn: inactive flakes activate [WF §4] on the top and upwind sides
-// of the simulation bounds [WF §5], with mass, size and fall speed drawn
-// from the emitter. Every draw is keyed by (seed, tick, flake id, stream).
+// of the simulation bounds [WF §5] as parcels of real flakes of one size,
+// drawn from the emitter's spectrum (snowfall.hpp). Every draw is keyed by
+// (seed, tick, flake id, stream).
 #include "ecs/rng.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/core/mass_ledger.hpp"
@@ -9,6 +10,7 @@
 #include "systems/core/units.hpp"
 #include "systems/flakes/emitter.hpp"
 #include "systems/flakes/flake_pool.hpp"
+#include "systems/flakes/snowfall.hpp"
 #include "systems/snowpack/snow_surface.hpp"
 #include "systems/wind/wind.hpp"
 
@@ -83,11 +85,6 @@ glm::vec3 point_on_face(const Aabb& b, int face, float u, float v) {
     }
 }
 
-/// Log-uniform in [lo, hi]: many small flakes, few heavy ones.
-float log_uniform(float lo, float hi, float u) {
-    return lo * std::pow(hi / lo, u);
-}
-
 } // namespace
 
 void spawn_system(World& w) {
@@ -100,14 +97,17 @@ void spawn_system(World& w) {
     const float gravity = std::max(-cfg.gravity.y, 1e-6f);
 
     const Aabb region = spawn_region(w, cfg.bounds);
+    const glm::vec3 extent = cfg.bounds.size();
+    const double ground_area = static_cast<double>(extent.x) * extent.z;
     std::uint32_t emitter_index = 0;
     w.each<Emitter>([&](Entity, const Emitter& em) {
         const RngKey count_key{cfg.seed, tick, emitter_index++, random_stream::spawn_activate};
         // floor(rate·dt + u): the expected count per tick, exactly on average.
         const double expected = static_cast<double>(em.rate) * cfg.dt;
         auto n = static_cast<std::uint64_t>(expected + rng_uniform(count_key));
-        const float mean_fall = 0.5f * (em.fall_speed_min + em.fall_speed_max);
-        const FaceWeights faces = face_weights(region, air, mean_fall);
+        const SpectrumMeans means = spectrum_means(em);
+        const FaceWeights faces = face_weights(region, air, static_cast<float>(means.fall_speed));
+        const double multiplicity = parcel_multiplicity(em, ground_area);
         for (; n > 0; --n) {
             std::uint32_t slot = 0;
             if (!pool.acquire(slot)) {
@@ -115,6 +115,17 @@ void spawn_system(World& w) {
             }
             // Keyed by the flake's id: the draws do not depend on which slot was free.
             const std::uint32_t id = pool.id[slot];
+            const float size =
+                size_at(em, rng_uniform({cfg.seed, tick, id, random_stream::spawn_size}));
+            // floor(x + u): whole units, the declared snowfall on average.
+            const double units_expected = parcel_units(em, multiplicity, size);
+            const auto units = static_cast<std::uint32_t>(std::min(
+                units_expected + rng_uniform({cfg.seed, tick, id, random_stream::spawn_rounding}),
+                double{max_flake_units})); // validate(Emitter, bounds) keeps parcels below
+            if (units == 0) {
+                pool.release(slot); // this parcel rounded to no snow
+                continue;
+            }
             const RngKey k{cfg.seed, tick, id, random_stream::spawn_position};
             float pick = rng_uniform(k, 0) * faces.total;
             int face = 0;
@@ -123,14 +134,7 @@ void spawn_system(World& w) {
                 ++face;
             }
             const glm::vec3 p = point_on_face(region, face, rng_uniform(k, 1), rng_uniform(k, 2));
-            const float u_mass = rng_uniform({cfg.seed, tick, id, random_stream::spawn_mass});
-            const float mass_g = log_uniform(em.mass_min_g, em.mass_max_g, u_mass);
-            const auto units = static_cast<std::uint32_t>(
-                std::clamp(std::lround(mass_g / (unit_kg * 1000.0)), 1l, long{max_flake_units}));
-            // Bigger flakes are heavier: size follows mass through the same draw.
-            const float size = em.size_min + (em.size_max - em.size_min) * u_mass;
-            const float fall = rng_range({cfg.seed, tick, id, random_stream::spawn_velocity}, 0,
-                                         em.fall_speed_min, em.fall_speed_max);
+            const float fall = fall_speed(em.crystal, size);
             pool.px[slot] = p.x;
             pool.py[slot] = p.y;
             pool.pz[slot] = p.z;
@@ -138,7 +142,9 @@ void spawn_system(World& w) {
             pool.vx[slot] = air.x;
             pool.vy[slot] = air.y - fall;
             pool.vz[slot] = air.z;
-            pool.k_over_m[slot] = gravity / fall; // terminal speed m·g/k = fall
+            // Drag such that m·g = k·fall: the size's terminal speed emerges
+            // from F = m·g + k·(w − v) [LH74].
+            pool.k_over_m[slot] = gravity / fall;
             pool.size[slot] = size;
             pool.mass_units[slot] = units;
             ledger.spawned += units;

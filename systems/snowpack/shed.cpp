@@ -3,6 +3,7 @@
 #include "systems/core/sim_config.hpp"
 #include "systems/core/units.hpp"
 #include "systems/flakes/emitter.hpp"
+#include "systems/flakes/snowfall.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,7 @@ float clump_drag(const World& w) {
     float fall = 1.0f;
     if (const auto* emitters = w.find_pool<Emitter>(); emitters && emitters->size() > 0) {
         const Emitter& e = emitters->components().front();
-        fall = 0.5f * (e.fall_speed_min + e.fall_speed_max);
+        fall = static_cast<float>(spectrum_means(e).fall_speed);
     }
     return g / fall;
 }

@@ -79,7 +79,12 @@ SnowSurface make_surface(const SurfaceDef& def) {
             std::min(levels, static_cast<double>(std::numeric_limits<std::uint32_t>::max())));
     };
     s.edge_limit_units = depth_units(def.edge_limit);
-    s.slide_units = depth_units(def.slide_depth);
+    // Weight along the slope minus friction, per unit of plan load and g.
+    const double tan_pitch = std::hypot(double{def.slope_x}, double{def.slope_z});
+    const double cos_pitch = 1.0 / std::sqrt(1.0 + tan_pitch * tan_pitch);
+    const double drive = cos_pitch * cos_pitch * (tan_pitch - def.slide_friction);
+    s.slide_drive = def.spills && drive > 0.0 ? static_cast<float>(drive) : 0.0f;
+    s.slide_adhesion = def.slide_adhesion;
     s.slide_along_x = std::abs(def.slope_x) >= std::abs(def.slope_z);
     s.slide_to_high = (s.slide_along_x ? def.slope_x : def.slope_z) < 0.0f;
     // [WF §3]: (4h - Σh_nb)/dx² <= L  <=>  4h - Σh_nb <= L·dx² metres, in levels.
@@ -252,14 +257,6 @@ void load_state(ByteReader& in, SnowSurface& s) {
 
 Invalid validate(const SurfaceDef& def) {
     Invalid e = check_fields("surface", surface_fields, def);
-    if (e.empty() && def.slide_depth > 0.0f) {
-        if (def.slope_x == 0.0f && def.slope_z == 0.0f) {
-            e = {"surface.slide_depth",
-                 "needs a tilted surface (slope_x or slope_z), got a flat one"};
-        } else if (!def.spills) {
-            e = {"surface.slide_depth", "needs a surface that spills (spills is false)"};
-        }
-    }
     return e;
 }
 

@@ -98,9 +98,12 @@ struct SnowSurface {
     /// repose over one cell (SurfaceDef::repose_deg): steeper snow slides
     /// down. 0 = no such rule (only surfaces built by hand in tests).
     std::int64_t talus_units = 0;
-    /// Mean depth (levels) above which a line down the slope slides
-    /// (SurfaceDef::slide_depth); 0 = never.
-    std::uint32_t slide_units = 0;
+    /// A line down the slope slides when its mean load M (kg/m² of plan)
+    /// gives M·g·slide_drive > slide_adhesion (Pa): slide_drive is
+    /// cos α·(sin α − μ·cos α) for pitch α and friction μ, <= 0 (never)
+    /// where friction alone holds the snow or the surface does not spill.
+    float slide_drive = 0.0f;
+    float slide_adhesion = 0.0f;
     bool slide_along_x = true; ///< the lines run along x (else z) ...
     bool slide_to_high = true; ///< ... to their last cell (else their first): the low edge
     bool spills = true;
@@ -247,7 +250,8 @@ inline constexpr FieldRule<SurfaceDef> surface_fields[] = {
     {"edge_limit", &SurfaceDef::edge_limit, non_negative},
     {"spills", &SurfaceDef::spills},
     {"laplacian_limit", &SurfaceDef::laplacian_limit, positive},
-    {"slide_depth", &SurfaceDef::slide_depth, non_negative},
+    {"slide_friction", &SurfaceDef::slide_friction, non_negative},
+    {"slide_adhesion", &SurfaceDef::slide_adhesion, non_negative},
     {"repose_deg", &SurfaceDef::repose_deg, positive_up_to(max_repose_deg)},
 };
 

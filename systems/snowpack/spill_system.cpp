@@ -4,11 +4,13 @@
 // normal pipeline onto whatever lies below (a porch roof, the ground). A
 // cover's edges are also inside it: where its base drops by more than its
 // drop limit (eaves, a statue's shoulder, a table edge). A tilted surface
-// may also shed in slabs: a line of cells down its slope whose mean depth
-// passes the slide depth sheds all its snow as clumps just beyond its low
-// edge, as roofs shed their snow onto whatever lies below the eave.
+// may also shed in slabs: a line of cells down its slope whose weight along
+// the slope beats its friction and adhesion sheds all its snow as clumps just
+// beyond its low edge, as roofs shed their snow onto whatever lies below the
+// eave.
 #include "systems/api/systems.hpp"
 #include "systems/core/sim_config.hpp"
+#include "systems/core/units.hpp"
 #include "systems/snowpack/shed.hpp"
 #include "systems/snowpack/snow_cover.hpp"
 #include "systems/snowpack/snow_surface.hpp"
@@ -58,10 +60,12 @@ void spill_border(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& 
 /// what lies below the eave.
 constexpr float slab_fall_speed = 5.0f;
 
-/// Each line down the slope, in index order, that holds more than slide_units
-/// on average slides off whole: its cells, low edge first, shed all their
-/// units as clumps just beyond the low edge (what the pool cannot take stays).
-void slide_lines(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& counters) {
+/// Each line down the slope, in index order, whose weight along the slope
+/// beats its hold (SnowSurface::slide_drive) slides off whole: its cells, low
+/// edge first, shed all their units as clumps just beyond the low edge (what
+/// the pool cannot take stays).
+void slide_lines(SnowSurface& s, FlakePool& pool, float k_over_m, double gravity,
+                 SimCounters& counters) {
     const std::uint32_t len = s.slide_along_x ? s.nx : s.nz;
     const std::uint32_t lines = s.slide_along_x ? s.nz : s.nx;
     const auto cell = [&](std::uint32_t line, std::uint32_t k) { // k = 0: the low edge
@@ -69,12 +73,15 @@ void slide_lines(SnowSurface& s, FlakePool& pool, float k_over_m, SimCounters& c
         return s.slide_along_x ? s.index(a, line) : s.index(line, a);
     };
     const double out = s.slide_to_high ? 1.0 : -1.0;
+    // The most units a cell's plan area holds: adhesion over drive per kg/m².
+    const double cell_area = static_cast<double>(s.cell) * s.cell;
+    const double held_units = s.slide_adhesion / (gravity * s.slide_drive) * cell_area / unit_kg;
     for (std::uint32_t line = 0; line < lines; ++line) {
-        std::int64_t depth = 0;
+        std::uint64_t units = 0;
         for (std::uint32_t k = 0; k < len; ++k) {
-            depth += s.depth_levels(cell(line, k));
+            units += s.snow[cell(line, k)];
         }
-        if (depth <= std::int64_t{s.slide_units} * len) {
+        if (static_cast<double>(units) <= held_units * len) {
             continue;
         }
         const std::size_t low = cell(line, 0);
@@ -120,14 +127,15 @@ void spill_system(World& w) {
     auto& pool = w.resource<FlakePool>();
     auto& counters = w.resource<SimCounters>();
     const float k_over_m = clump_drag(w);
-    const float slab_k_over_m = std::abs(w.resource<SimConfig>().gravity.y) / slab_fall_speed;
+    const float gravity = std::abs(w.resource<SimConfig>().gravity.y);
+    const float slab_k_over_m = gravity / slab_fall_speed;
     const auto* covers = w.find_pool<SnowCover>();
     auto& surfaces = w.pool<SnowSurface>();
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         SnowSurface& s = surfaces.components()[i];
         if (s.spills) {
-            if (s.slide_units != 0) {
-                slide_lines(s, pool, slab_k_over_m, counters);
+            if (s.slide_drive > 0.0f) {
+                slide_lines(s, pool, slab_k_over_m, gravity, counters);
             }
             spill_border(s, pool, k_over_m, counters);
         }

@@ -1,9 +1,9 @@
-// Hard case 2: only the heaviest flakes (5 g = max_flake_units) with a long
-// tick (dt = 0.25 s, so c·dt = 1.6..4.9 for the emitter's fall speeds: past
-// explicit Euler's limit) in still air. Flakes must stay finite, keep their
-// exact mass and land. One landing is 2 cm of snow on a 5 cm ground cell, a
-// Laplacian of 4000 units against the cap of 2500 [WF §3], so every
-// landing is smoothed; the shed's roof spills clumps cut into <= 1000 units.
+// Hard case 2: only the heaviest parcels (5 g = max_flake_units) with a long
+// tick (dt = 0.25 s) in still air. The parcels are 1 mm graupel, which falls
+// at 0.79 m/s, so c·dt = g·dt/v = 3.1: past explicit Euler's limit of 2. Flakes must stay finite,
+// keep their exact mass and land. One landing is 2 cm of snow on a 5 cm ground cell, a Laplacian of
+// 4000 units against the cap of 2500 [WF §3], so every landing is smoothed; the shed's roof spills
+// clumps cut into <= 1000 units.
 #include "hard_case_util.hpp"
 #include "systems/api/simulation_internals.hpp"
 
@@ -18,7 +18,7 @@ struct HeavyScene {
     SurfaceId roof;
 };
 
-/// 8 × 8 m still-air yard with a shed, emitting only 5 g flakes at dt = 0.25 s.
+/// 8 × 8 m still-air yard with a shed, emitting only 5 g parcels at dt = 0.25 s.
 HeavyScene heavy_scene(Integrator integ) {
     SimConfig cfg;
     cfg.seed = 5;
@@ -44,7 +44,9 @@ HeavyScene heavy_scene(Integrator integ) {
     s.roof = s.sim->add_surface(roof, box);
     Emitter e;
     e.rate = 200.0f;
-    e.mass_min_g = e.mass_max_g = 5.0f;
+    e.crystal = CrystalType::rimed_aggregate;
+    e.size_min = e.size_max = 0.001f;
+    e.snowfall_kg_m2_h = 3600.0f / 64.0f; // 1 kg/s over the 8 × 8 m yard: 5 g per parcel
     s.sim->add_emitter(e);
     return s;
 }

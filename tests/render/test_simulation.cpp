@@ -3,6 +3,7 @@
 #include "render/renderer_internals.hpp"
 #include "render_fixture.hpp"
 #include "systems/api/simulation_internals.hpp"
+#include "systems/flakes/snowfall.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,7 +34,7 @@ TEST(RenderSimulation, RendersASteppedSimulationWithoutChangingIt) {
     top.base_y = roof_box.max.y;
     sim.add_surface(top, roof);
     sim.add_box(crate_box);
-    sim.add_emitter(Emitter{});
+    sim.add_emitter(with_snowfall(Emitter{}, 100.0f, 12.0 * 12.0)); // a test-sized blizzard
     sim.set_occlusion(OcclusionCamera{});
     SceneVisuals visuals;
     visuals.meshes = {box_mesh(roof_box, {0.4f, 0.4f, 0.45f}),

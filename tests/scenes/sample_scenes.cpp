@@ -2,6 +2,7 @@
 
 #include "ecs/rng.hpp"
 #include "systems/core/random_streams.hpp"
+#include "systems/flakes/snowfall.hpp"
 
 #include <utility>
 #include <vector>
@@ -48,6 +49,11 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     if (o.emitter_rate > 0.0f) {
         Emitter e;
         e.rate = o.emitter_rate;
+        const glm::vec3 size = sim->config().bounds.size();
+        e.snowfall_kg_m2_h =
+            o.snowfall_kg_m2_h > 0.0f
+                ? o.snowfall_kg_m2_h
+                : heaviest_snowfall_kg_m2_h(e, static_cast<double>(size.x) * size.z);
         sim->add_emitter(e);
     }
     prefill_flakes(*sim, o.prefill);

@@ -19,7 +19,8 @@ struct YardOptions {
     Integrator integrator = Integrator::explicit_euler;
     std::uint32_t ground_cells = 128; ///< ground surface is ground_cells² cells
     std::uint32_t max_flakes = 20000;
-    float emitter_rate = 3000.0f; ///< flakes per second; 0 = no emitter
+    float emitter_rate = 3000.0f;  ///< parcels per second; 0 = no emitter
+    float snowfall_kg_m2_h = 0.0f; ///< 0: the heaviest snowfall emitter_rate carries
     bool wind = true;
     std::uint32_t prefill = 0; ///< flakes placed airborne before tick 0
 };

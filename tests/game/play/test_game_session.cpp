@@ -2,6 +2,7 @@
 // window and no GL: each key does to the simulation, the camera, the player
 // and the clock what the game's help says it does.
 #include "systems/api/simulation_internals.hpp"
+#include "systems/flakes/snowfall.hpp"
 #include "tests/game/play/game_play.hpp"
 
 #include <gtest/gtest.h>
@@ -17,10 +18,10 @@ namespace {
 using test::GamePlay;
 using test::quick_game;
 
-std::vector<float> emitter_rates(const Simulation& sim) {
-    std::vector<float> rates;
-    world_of(sim).each<Emitter>([&](Entity, const Emitter& e) { rates.push_back(e.rate); });
-    return rates;
+std::vector<Emitter> emitters(const Simulation& sim) {
+    std::vector<Emitter> all;
+    world_of(sim).each<Emitter>([&](Entity, const Emitter& e) { all.push_back(e); });
+    return all;
 }
 
 glm::vec3 player_position(const GamePlay& g) {
@@ -29,31 +30,37 @@ glm::vec3 player_position(const GamePlay& g) {
     return w ? body_of(g.sim(), w->body()).position : glm::vec3(NAN);
 }
 
-TEST(GameSession, SnowfallKeysScaleEveryEmittersRate) {
+TEST(GameSession, SnowfallKeysScaleEverySnowfallAndTheRateCarriesIt) {
     GamePlay g(quick_game());
-    const std::vector<float> before = emitter_rates(g.sim());
+    const std::vector<Emitter> before = emitters(g.sim());
     ASSERT_FALSE(before.empty());
+    const glm::vec3 size = g.sim().config().bounds.size();
+    const double area = static_cast<double>(size.x) * size.z;
     g.press(GLFW_KEY_EQUAL);
-    const std::vector<float> more = emitter_rates(g.sim());
+    const std::vector<Emitter> more = emitters(g.sim());
     ASSERT_EQ(more.size(), before.size());
     for (std::size_t i = 0; i < before.size(); ++i) {
-        EXPECT_FLOAT_EQ(more[i], before[i] * 1.5f) << i;
+        EXPECT_FLOAT_EQ(more[i].snowfall_kg_m2_h, before[i].snowfall_kg_m2_h * 1.5f) << i;
+        EXPECT_GE(more[i].rate, before[i].rate) << i;
+        EXPECT_GE(more[i].rate, min_parcel_rate(more[i], area)) << i;
     }
-    EXPECT_EQ(g.session->message(),
-              "snowfall " + std::to_string(static_cast<int>(more.back())) + " flakes/s");
+    EXPECT_NE(g.session->message().find("snowfall"), std::string::npos) << g.session->message();
+    EXPECT_NE(g.session->message().find("kg/m²/h"), std::string::npos) << g.session->message();
     g.press(GLFW_KEY_MINUS);
-    const std::vector<float> less = emitter_rates(g.sim());
+    const std::vector<Emitter> less = emitters(g.sim());
     for (std::size_t i = 0; i < before.size(); ++i) {
-        EXPECT_FLOAT_EQ(less[i], before[i]) << i;
+        EXPECT_FLOAT_EQ(less[i].snowfall_kg_m2_h, before[i].snowfall_kg_m2_h) << i;
     }
 }
 
 TEST(GameSession, SnowfallOptionSetsEveryEmitter) {
     GameOptions o = quick_game();
-    o.snowfall = 1234.0f;
+    o.snowfall = 120.0f;
     GamePlay g(o);
-    for (const float rate : emitter_rates(g.sim())) {
-        EXPECT_EQ(rate, 1234.0f);
+    const glm::vec3 size = g.sim().config().bounds.size();
+    for (const Emitter& e : emitters(g.sim())) {
+        EXPECT_EQ(e.snowfall_kg_m2_h, 120.0f);
+        EXPECT_GE(e.rate, min_parcel_rate(e, static_cast<double>(size.x) * size.z));
     }
 }
 

@@ -95,9 +95,10 @@ std::optional<Walk> walk_report(const std::string& out) {
     return Walk{std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stoi(m[4])};
 }
 
-/// The village after 10 s of a heavy snowfall (a few millimetres): the
+/// The village after 10 s of a fast-forwarded snowfall (150 kg/m²/h, about
+/// 4 mm): the
 /// player holds W from the first frame and Esc ends the run.
-const std::string walk_args = "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 "
+const std::string walk_args = "--size 160x120 --quality low --snowfall 150 --max-flakes 300000 "
                               "--warmup 300 --inject 0:W:90,100:ESC";
 
 void expect_trench(const snow::test::AppRun& r, double at_least_m) {
@@ -150,7 +151,7 @@ TEST(SnowGame, WindowUnderXvfbPlayerWalksForwardAndLeavesATrench) {
     // ASan, where the old trail had filled in again). Paused, each N steps
     // one tick with W held: 90 ticks, 4.2 m, at any frame rate.
     std::ostringstream args;
-    args << "--size 160x120 --quality low --snowfall 30000 --max-flakes 300000 --warmup 300 "
+    args << "--size 160x120 --quality low --snowfall 150 --max-flakes 300000 --warmup 300 "
             "--inject 0:P,1:W:100";
     for (int frame = 2; frame < 92; ++frame) {
         args << ',' << frame << ":N";
@@ -174,7 +175,7 @@ TEST(SnowGame, TimelapseWritesFramesAndAContactSheet) {
     std::filesystem::remove_all(dir);
     // The time-lapse's settings, shortened: 9 frames of 64 ticks, 6 moments.
     const snow::test::AppRun r = run_game("MESA_SHADER_CACHE_DISABLE=true",
-                                          "--timelapse --frames 9 --size 160x96 --snowfall 3000 "
+                                          "--timelapse --frames 9 --size 160x96 --snowfall 15 "
                                           "--walk-once-at 3 --contact-sheet 6 --out " +
                                               dir.string());
     ASSERT_EQ(r.status, 0) << r.out;

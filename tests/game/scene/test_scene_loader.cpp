@@ -384,7 +384,7 @@ TEST(SceneLoaderErrors, WrongExtrasTypesAndUnknownFields) {
 
 TEST(SceneLoaderErrors, SceneSettingsNameTheirField) {
     const std::string minimal = read_text(asset_path("minimal.gltf"));
-    expect_error(load_text(replaced(minimal, "\"size_min\": 0.002", "\"size_min\": -0.01")),
+    expect_error(load_text(replaced(minimal, "\"size_min\": 0.001", "\"size_min\": -0.01")),
                  {"test.gltf: scenes[0].extras.snow.emitter.size_min must be > 0 (got -0.01)"});
     expect_error(load_text(replaced(minimal, "\"max_flakes\": 5000", "\"max_flakes\": 1000000000")),
                  {"scenes[0].extras.snow.simulation.max_flakes must be <= 16777216"});

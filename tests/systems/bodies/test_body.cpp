@@ -103,6 +103,7 @@ TEST(Body, SnowfallFillsATrailAgain) {
     EXPECT_LT(carved, depth_units / 4);
     Emitter e;
     e.rate = 4000.0f;
+    e.snowfall_kg_m2_h = 200.0f; // a test-sized blizzard: 0.8 kg/m² in the 15 s
     g.sim.add_emitter(e);
     g.run(900);
     EXPECT_GT(g.at(0.0f, 0.0f), carved + 100) << "new snow lies in the trail";

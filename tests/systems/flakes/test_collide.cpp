@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 #include <limits>
 
 namespace snow {
@@ -332,6 +335,46 @@ TEST(Collide, OneAndTwoThreadsLeaveIdenticalPoolState) {
     EXPECT_GT(la.removed_bare, 0u);
     EXPECT_NE(a.px, before.px); // some flakes were pushed out of boxes
     EXPECT_TRUE(one.mass().balanced());
+}
+
+TEST(Collide, NoFlakeLiesAtRestOnATiltedMeshRoof) {
+    // A mesh roof seen through the sky map: a texel's top may lie above the
+    // snow top of the cell under it. A flake stopped there must still become
+    // snow of the roof's surface (or slide off), never rest on the bare plane.
+    for (const float pitch_deg : {30.0f, 45.0f, 60.0f}) {
+        SCOPED_TRACE(pitch_deg);
+        SimConfig c;
+        c.bounds = {{-3.0f, 0.0f, -3.0f}, {3.0f, 8.0f, 3.0f}};
+        c.max_flakes = 20000;
+        Simulation sim(c);
+        const float slope = std::tan(glm::radians(pitch_deg));
+        const auto y = [&](float x) { return 3.0f + slope * (x + 1.0f); };
+        const std::vector<glm::vec3> roof_mesh{{-1, y(-1), -1}, {1, y(1), -1}, {1, y(1), 1},
+                                               {-1, y(-1), -1}, {1, y(1), 1},  {-1, y(-1), 1}};
+        const ColliderId roof = sim.add_mesh_collider(roof_mesh);
+        SurfaceDef d = test::rect_surface(-1.0f, -1.0f, 2.0f, 2.0f, 0.0f, true);
+        d.cell = 0.1f;
+        d.slope_x = slope;
+        d.base_y = y(-1.0f);
+        const SurfaceId surface = sim.add_surface(d, roof);
+        sim.set_occlusion(OcclusionCamera{64, 0.0f});
+        Emitter e;
+        e.snowfall_kg_m2_h = 30.0f;
+        sim.add_emitter(e);
+        sim.run(900);
+        const FlakePool& f = flake_pool(sim);
+        std::uint32_t resting = 0;
+        for (std::uint32_t i = 0; i < f.slot_end; ++i) {
+            const bool over_roof = std::abs(f.px[i]) < 0.95f && std::abs(f.pz[i]) < 0.95f &&
+                                   f.py[i] > 2.0f && f.py[i] < 7.0f;
+            if (f.is_alive(i) && over_roof && std::abs(f.vy[i]) < 0.05f) {
+                ++resting;
+            }
+        }
+        EXPECT_EQ(resting, 0u);
+        EXPECT_GT(snow_surface(sim, surface).settled_units(), 0u);
+        EXPECT_TRUE(sim.mass().balanced());
+    }
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // point and slide down, which builds a drift at the base of the windward side.
 #include "systems/api/simulation_internals.hpp"
 #include "tests/scenes/sample_scenes.hpp"
+#include "tests/support/units_in.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,18 +11,7 @@ namespace {
 
 /// Settled units on the ground in the strip x0 <= x < x1, |z| < 1.5 (the garage's depth).
 std::uint64_t strip_units(const Simulation& sim, SurfaceId ground, float x0, float x1) {
-    const auto& s = snow_surface(sim, ground);
-    std::uint64_t sum = 0;
-    for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
-        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
-            const float x = s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell;
-            const float z = s.z0 + (static_cast<float>(iz) + 0.5f) * s.cell;
-            if (x >= x0 && x < x1 && z > -1.5f && z < 1.5f) {
-                sum += s.snow[s.index(ix, iz)];
-            }
-        }
-    }
-    return sum;
+    return test::units_in(snow_surface(sim, ground), x0, -1.5f, x1, 1.5f);
 }
 
 TEST(Drift, WindwardBaseOfABoxGetsMoreSnowThanTheLeeSide) {

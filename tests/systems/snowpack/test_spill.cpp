@@ -2,6 +2,7 @@
 // falls onto the surfaces below; mass moves from settled to airborne exactly.
 #include "systems/api/simulation_internals.hpp"
 #include "systems/core/units.hpp"
+#include "systems/flakes/snowfall.hpp"
 #include "tests/support/rect_surface.hpp"
 
 #include <gtest/gtest.h>
@@ -81,8 +82,7 @@ TEST(Spill, FlakesAppearHalfACellOutsideAtTheSnowTop) {
     House h(true);
     Emitter em;
     em.rate = 0.0f;
-    em.fall_speed_min = 1.0f;
-    em.fall_speed_max = 3.0f;
+    em.crystal = CrystalType::rimed_aggregate;
     h.sim.add_emitter(em);
     const SnowSurface& r = h.s(h.roof);
     h.load(h.roof, r.nx - 1, 0, 2000 + 2500); // a corner: it sheds diagonally outward
@@ -96,7 +96,8 @@ TEST(Spill, FlakesAppearHalfACellOutsideAtTheSnowTop) {
         EXPECT_FLOAT_EQ(f.pz[i], -1.05f);
         EXPECT_FLOAT_EQ(f.py[i], top);
         EXPECT_EQ(f.vy[i], 0.0f);
-        EXPECT_FLOAT_EQ(f.k_over_m[i], 9.81f / 2.0f); // g over the emitter's mean fall speed
+        // g over the emitter's mean fall speed
+        EXPECT_FLOAT_EQ(f.k_over_m[i], 9.81f / static_cast<float>(spectrum_means(em).fall_speed));
         EXPECT_LE(f.mass_units[i], max_flake_units);
         units += f.mass_units[i];
     }
