@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages snow needs, only those missing. Idempotent.
 # Usage: scripts/deps.sh            (everything: build, render, scenes, tests, bench)
+#        scripts/deps.sh PACKAGE...  (those too, e.g. CI's aarch64 step:
+#                                     g++-aarch64-linux-gnu qemu-user)
 set -euo pipefail
 
 packages=(
@@ -15,6 +17,7 @@ packages=(
     gnuplot-nox                                  # plots in docs/
     ffmpeg                                       # play.sh headless: the time-lapse as MP4
     libirrlicht-dev                              # examples/irrlicht (snow inside the Irrlicht engine)
+    "$@"
 )
 # The glTF validator test (npm gltf-validator) needs node and npm; any
 # install of them will do, so Debian's are added only when there are none.

@@ -60,6 +60,15 @@ std::unique_ptr<Simulation> make_yard(const YardOptions& o) {
     return sim;
 }
 
+YardOptions busy_yard(unsigned threads) {
+    YardOptions o;
+    o.threads = threads;
+    o.max_flakes = 60000;
+    o.prefill = 40000;
+    o.emitter_rate = 6000.0f;
+    return o;
+}
+
 FlakeSpec prefill_flake(const SimConfig& config, std::uint32_t n) {
     const glm::vec3 lo = config.bounds.min, hi = config.bounds.max;
     const RngKey k{config.seed, ~0ull, n, random_stream::spawn_position};

@@ -29,6 +29,11 @@ struct YardOptions {
 /// roof, a sphere (snowman), steady wind along +x, an emitter.
 [[nodiscard]] std::unique_ptr<Simulation> make_yard(const YardOptions& o = {});
 
+/// The yard Determinism.PinnedHashHoldsInEveryBuild pins: 40000 flakes
+/// prefilled (more than two chunks of flake_grain, so threads share work) in
+/// a pool of 60000, and a heavy emitter.
+[[nodiscard]] YardOptions busy_yard(unsigned threads);
+
 /// The yard with every kind of hidden state switched on, for the tests of
 /// snapshots and allocation: 40000 prefilled flakes (more than two chunks, so
 /// two threads share the work) and a heavy emitter; a walking, gusting wind;

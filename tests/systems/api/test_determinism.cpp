@@ -10,15 +10,6 @@
 namespace snow {
 namespace {
 
-YardOptions busy_yard(unsigned threads) {
-    YardOptions o;
-    o.threads = threads;
-    o.max_flakes = 60000;
-    o.prefill = 40000; // more than two chunks of flake_grain, so threads share work
-    o.emitter_rate = 6000.0f;
-    return o;
-}
-
 /// The busy yard, its chunks shared by the threads although it is small.
 std::unique_ptr<Simulation> busy(unsigned threads) {
     auto sim = make_yard(busy_yard(threads));
