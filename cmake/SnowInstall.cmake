@@ -1,6 +1,7 @@
 # cmake --install exports snowConfig.cmake so `find_package(snow)` gives
 # snow::sim and, when built, snow::scene, snow::render and snow::c (snow::ecs
-# comes along as their dependency). The public API is include/snow/ alone:
+# and snow::files, the renderer's file writer, come along as their
+# dependencies). The public API is include/snow/ alone:
 #   <snow/snow.hpp>    snow::sim     the Simulation (no GL), with defs.hpp,
 #                                    views.hpp, error.hpp, task_system.hpp, allocator.hpp
 #   <snow/scene.hpp>   snow::scene   glTF scene loading (no GL)
@@ -69,7 +70,7 @@ endfunction()
 
 # Exports `target` (when built) with its public header `root`, which reaches
 # snow::sim's headers and those listed in `listed`, and never `forbidden`.
-set(SNOW_EXPORTED snow_ecs)
+set(SNOW_EXPORTED snow_ecs snow_files)
 set(SNOW_INSTALLED_HEADERS)
 function(snow_public_target target root listed forbidden)
     if(NOT TARGET ${target})

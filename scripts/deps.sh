@@ -13,6 +13,7 @@ packages=(
     nlohmann-json3-dev                           # snow_scene
     zlib1g-dev                                   # snow_export (16-bit depth PNGs)
     googletest libgtest-dev libbenchmark-dev     # snow_tests, snow_bench
+    libtinygltf-dev                              # snow_gltf_oracle_tests (tinygltf 2.7, the loader's oracle)
     xvfb xauth                                   # window tests without a display
     gnuplot-nox                                  # plots in docs/
     ffmpeg                                       # play.sh headless: the time-lapse as MP4

@@ -5,13 +5,13 @@
 // field's resolution and update interval against a fine field (issue #15). scripts/accuracy.sh
 // runs it and turns its output into docs/accuracy.md and plots.
 #include "bench/accuracy/report.hpp"
+#include "ecs/staged_files.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -28,7 +28,8 @@ constexpr const char* usage = R"(usage: snow_accuracy [options]
   --block M        block edge in metres of the main depth error (default 2)
   --quick          a small plan that finishes in seconds (smoke test, not for docs)
   --help           this text
-Exit status: 0 ok, 2 bad arguments, 1 failure.
+Exit status: 0 ok, 2 bad arguments or an output folder that cannot be written,
+1 failure.
 )";
 
 struct UsageError {
@@ -151,7 +152,7 @@ WindFieldStudyOptions wind_plan(const Args& a) {
 
 int run(const Args& a) {
     const auto start = std::chrono::steady_clock::now();
-    std::filesystem::create_directories(a.out);
+    prepare_output_dir(a.out); // before the study, not after its hours
     StudyResults r;
     r.trajectory_options = trajectory_plan(a.quick);
     std::fprintf(stderr, "snow_accuracy: trajectories (%zu integrators x %zu dt)\n",
@@ -192,6 +193,9 @@ int main(int argc, char** argv) {
         return run(parse(argc, argv));
     } catch (const UsageError& e) {
         std::fprintf(stderr, "snow_accuracy: %s\n%s", e.message.c_str(), usage);
+        return 2;
+    } catch (const FileWriteError& e) {
+        std::fprintf(stderr, "snow_accuracy: %s\n", e.what());
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "snow_accuracy: %s\n", e.what());

@@ -2,52 +2,42 @@
 // markdown tables line up; every number in them comes from this run.
 #include "bench/accuracy/report.hpp"
 
+#include "ecs/staged_files.hpp"
+
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
-#include <stdexcept>
+#include <span>
 #include <string>
 
 namespace snow::accuracy {
 
 namespace {
 
-/// A file opened for writing; throws naming it if that fails.
+/// A text file built in memory and written all or nothing by close()
+/// (ecs/staged_files.hpp), so an interrupted study leaves the old file.
 class OutFile {
   public:
-    explicit OutFile(const std::string& path) : f_(std::fopen(path.c_str(), "w")), path_(path) {
-        if (f_ == nullptr) {
-            throw std::runtime_error("cannot write " + path);
-        }
-    }
-    ~OutFile() {
-        if (f_ != nullptr) {
-            std::fclose(f_);
-        }
-    }
-    OutFile(const OutFile&) = delete;
-    OutFile& operator=(const OutFile&) = delete;
+    explicit OutFile(std::string path) : path_(std::move(path)) {}
     [[gnu::format(printf, 2, 3)]] void print(const char* fmt, ...) {
-        va_list args;
+        va_list args, again;
         va_start(args, fmt);
-        std::vfprintf(f_, fmt, args);
+        va_copy(again, args);
+        const int n = std::vsnprintf(nullptr, 0, fmt, args);
         va_end(args);
+        const std::size_t at = text_.size();
+        text_.resize(at + static_cast<std::size_t>(std::max(n, 0)) + 1);
+        std::vsnprintf(text_.data() + at, text_.size() - at, fmt, again);
+        va_end(again);
+        text_.pop_back(); // vsnprintf's terminating zero
     }
-    void text(const std::string& s) { std::fputs(s.c_str(), f_); }
-    /// Flushes and closes; throws if anything failed to reach the file.
-    void close() {
-        const bool bad = std::ferror(f_) != 0;
-        const bool closed = std::fclose(f_) == 0;
-        f_ = nullptr;
-        if (bad || !closed) {
-            throw std::runtime_error("error writing " + path_);
-        }
-    }
+    void text(const std::string& s) { text_ += s; }
+    /// Writes the file; throws FileWriteError naming it if that fails.
+    void close() const { write_file(path_, std::as_bytes(std::span(text_))); }
 
   private:
-    std::FILE* f_;
-    std::string path_;
+    std::string path_, text_;
 };
 
 std::string name_of(Integrator i) {

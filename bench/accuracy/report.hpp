@@ -32,7 +32,8 @@ struct StudyResults {
 /// trajectory.csv, trajectory_<integrator>.dat (one per integrator, for
 /// gnuplot), scene.csv, scene.dat, floor.gp, wind_field.csv, wind_field.dat
 /// and report.md in `dir` (which must exist).
-/// Throws std::runtime_error naming a file that cannot be written.
+/// Each file is written all or nothing; throws FileWriteError naming a file
+/// that cannot be written.
 void write_results(const std::string& dir, const StudyResults& r);
 
 } // namespace snow::accuracy

@@ -1,13 +1,14 @@
 // snow_validate: runs every probe of the validation table (issue #30) and
 // writes it as Markdown; scripts/validate.sh puts it into docs/validation.md.
 #include "bench/validation/validation.hpp"
+#include "ecs/staged_files.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <iostream>
+#include <span>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -20,7 +21,8 @@ constexpr const char* usage = R"(usage: snow_validate [--quick] [--out FILE]
   --out FILE   write the Markdown table there (default: standard output)
   --quick      seconds-long smoke run; its numbers are not for the table
   --help       this text
-Exit status: 0 ok (whatever the rows say), 2 bad arguments, 1 failure.
+Exit status: 0 ok (whatever the rows say), 2 bad arguments or an --out FILE that
+cannot be written, 1 failure.
 )";
 
 std::string value_text(double v) {
@@ -63,6 +65,9 @@ int main(int argc, char** argv) {
         {"roof load by pitch", roof_load_by_pitch},
     };
     try {
+        if (!out.empty()) {
+            snow::check_file_writable(out); // before the probes, not after them
+        }
         std::ostringstream table;
         table << "| quantity | published | scene | ours | band | in band |\n"
               << "|---|---|---|---|---|---|\n";
@@ -86,14 +91,13 @@ int main(int argc, char** argv) {
         if (out.empty()) {
             std::cout << table.str();
         } else {
-            std::ofstream file(out);
-            file << table.str();
-            if (!file) {
-                std::fprintf(stderr, "snow_validate: cannot write %s\n", out.c_str());
-                return 1;
-            }
+            const std::string text = table.str();
+            snow::write_file(out, std::as_bytes(std::span(text)));
         }
         std::fprintf(stderr, "snow_validate: %d of %d rows in band\n", passed, rows);
+    } catch (const snow::FileWriteError& e) {
+        std::fprintf(stderr, "snow_validate: --out: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "\nsnow_validate: %s\n", e.what());
         return 1;

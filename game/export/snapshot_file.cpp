@@ -9,11 +9,7 @@
 namespace snow {
 
 void save_snapshot_file(const Simulation& sim, const std::filesystem::path& file) {
-    const std::vector<std::byte> bytes = sim.save_bytes();
-    const auto* b = reinterpret_cast<const std::uint8_t*>(bytes.data());
-    StagedFiles out;
-    out.stage(file, std::vector<std::uint8_t>(b, b + bytes.size()));
-    out.commit();
+    write_file(file, sim.save_bytes());
 }
 
 void load_snapshot_file(Simulation& sim, const std::filesystem::path& file) {

@@ -4,14 +4,14 @@
 /// into place), read whole and refused with one error naming the file.
 #pragma once
 
-#include "game/export/staged_files.hpp"
+#include "ecs/staged_files.hpp"
 #include "systems/api/simulation_internals.hpp"
 
 #include <filesystem>
 
 namespace snow {
 
-/// Writes `sim`'s snapshot to `file`; throws ExportError naming the path
+/// Writes `sim`'s snapshot to `file`; throws FileWriteError naming the path
 /// (an old file there stays whole).
 void save_snapshot_file(const Simulation& sim, const std::filesystem::path& file);
 

@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <span>
 #include <string>
 
 namespace snow {
@@ -19,8 +20,10 @@ namespace {
 
 constexpr const char* generator = "snow " SNOW_VERSION " (snow_run --export)";
 
-std::vector<std::uint8_t> bytes_of(const std::string& s) {
-    return {s.begin(), s.end()};
+/// A string's or a byte vector's bytes, as the file writer takes them.
+template <typename Bytes>
+std::span<const std::byte> bytes_of(const Bytes& b) {
+    return std::as_bytes(std::span(b));
 }
 
 /// The shortest decimal that reads back as `f`: a 0.1f cell is written 0.1.
@@ -45,11 +48,9 @@ void export_snow_glb(const Simulation& sim, const std::filesystem::path& file) {
     try {
         glb = encode_glb(named, generator);
     } catch (const std::length_error& e) {
-        throw ExportError("cannot write '" + file.string() + "': " + e.what());
+        throw FileWriteError("cannot write '" + file.string() + "': " + e.what());
     }
-    StagedFiles out;
-    out.stage(file, glb);
-    out.commit();
+    write_file(file, bytes_of(glb));
 }
 
 std::vector<std::uint16_t> depth_mm(const SnowSurface& s) {
@@ -69,7 +70,7 @@ void export_snow_depth(const Simulation& sim, const std::filesystem::path& dir) 
     StagedFiles out;
     for (const NamedSurface& ns : named_surfaces(sim)) {
         const SnowSurface& s = *ns.surface;
-        out.stage(dir / (ns.name + ".png"), encode_png_gray16(s.nx, s.nz, depth_mm(s)));
+        out.stage(dir / (ns.name + ".png"), bytes_of(encode_png_gray16(s.nx, s.nz, depth_mm(s))));
         const nlohmann::ordered_json meta = {{"name", ns.name},
                                              {"kind", kind_name(ns.kind)},
                                              {"origin", {decimal(s.x0), decimal(s.z0)}},

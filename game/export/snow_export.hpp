@@ -4,7 +4,7 @@
 /// PNG with a JSON sidecar. All or nothing: on failure no file is left.
 #pragma once
 
-#include "game/export/staged_files.hpp"
+#include "ecs/staged_files.hpp"
 #include "systems/api/simulation_internals.hpp"
 
 #include <cstdint>
@@ -14,11 +14,11 @@
 namespace snow {
 
 /// Writes the snow of every surface of `sim` to `file` (glTF 2.0 binary).
-/// Throws ExportError naming the path.
+/// Throws FileWriteError naming the path.
 void export_snow_glb(const Simulation& sim, const std::filesystem::path& file);
 
 /// Writes `<name>.png` and `<name>.json` for every surface into `dir`
-/// (created when missing). Throws ExportError naming the path.
+/// (created when missing). Throws FileWriteError naming the path.
 void export_snow_depth(const Simulation& sim, const std::filesystem::path& dir);
 
 /// Depth in millimetres per cell (clamped to 65535; void cells 0), row-major

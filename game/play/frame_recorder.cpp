@@ -1,19 +1,28 @@
 #include "game/play/frame_recorder.hpp"
 
+#include "ecs/staged_files.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <span>
+#include <vector>
 
 namespace snow {
 
+void write_png_file(const std::filesystem::path& path, const Image& image) {
+    const std::vector<std::uint8_t> png = encode_png(image);
+    write_file(path, std::as_bytes(std::span(png)));
+}
+
 FrameRecorder::FrameRecorder(std::string dir) : dir_(std::move(dir)) {
-    std::filesystem::create_directories(dir_);
+    prepare_output_dir(dir_);
 }
 
 void FrameRecorder::write(const Image& frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05llu.png", static_cast<unsigned long long>(frames_));
-    write_png(std::filesystem::path(dir_) / name, frame);
+    write_png_file(std::filesystem::path(dir_) / name, frame);
     ++frames_;
 }
 
@@ -31,9 +40,9 @@ std::optional<std::string> FrameRecorder::encode_video() const {
 }
 
 std::string save_screenshot(const Image& image, std::uint64_t n) {
-    std::filesystem::create_directories("screenshots");
+    prepare_output_dir("screenshots");
     const std::string path = "screenshots/snow_" + std::to_string(n) + ".png";
-    write_png(path, image);
+    write_png_file(path, image);
     return std::filesystem::absolute(path).string();
 }
 

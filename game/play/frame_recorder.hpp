@@ -6,17 +6,23 @@
 #include <snow/render.hpp>
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
 namespace snow {
 
+/// Writes `image` as a PNG all or nothing; throws FileWriteError naming the
+/// path, which snow_game reports with exit status 2 like snow_run does.
+void write_png_file(const std::filesystem::path& path, const Image& image);
+
 class FrameRecorder {
   public:
-    /// Frames go to `dir` (created if missing) as frame_00000.png, frame_00001.png, ...
+    /// Frames go to `dir` (created if missing) as frame_00000.png, frame_00001.png, ...;
+    /// throws FileWriteError when no file can be written there.
     explicit FrameRecorder(std::string dir);
 
-    /// Writes the next numbered frame; throws RenderError naming the file on failure.
+    /// Writes the next numbered frame; throws FileWriteError naming the file on failure.
     void write(const Image& frame);
     [[nodiscard]] std::uint64_t frames() const { return frames_; }
     [[nodiscard]] const std::string& dir() const { return dir_; }
@@ -29,7 +35,8 @@ class FrameRecorder {
     std::uint64_t frames_ = 0;
 };
 
-/// Writes screenshot number `n` to screenshots/snow_<n>.png; returns its absolute path.
+/// Writes screenshot number `n` to screenshots/snow_<n>.png; returns its
+/// absolute path. Throws FileWriteError naming the file on failure.
 [[nodiscard]] std::string save_screenshot(const Image& image, std::uint64_t n);
 
 } // namespace snow

@@ -1,6 +1,7 @@
 #include "game/play/game_app.hpp"
 #include "systems/api/simulation_internals.hpp"
 
+#include "ecs/staged_files.hpp"
 #include "game/play/frame_recorder.hpp"
 #include "game/play/game_session.hpp"
 #include "game/play/headless_recording.hpp"
@@ -150,6 +151,9 @@ int play(GameOptions opt) {
 int run_game(const GameOptions& options) {
     try {
         return play(options);
+    } catch (const FileWriteError& e) { // a frame, sheet or screenshot: read-only folder, full disk
+        std::fprintf(stderr, "snow_game: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "snow_game: %s\n", e.what());
         return 1;

@@ -27,7 +27,7 @@ std::string HeadlessRecording::finish() const {
     if (sheet_ && sheet_->size() > 0) {
         const std::filesystem::path sheet =
             std::filesystem::absolute(std::filesystem::path(recorder_.dir()) / "contact_sheet.png");
-        write_png(sheet, sheet_->compose());
+        write_png_file(sheet, sheet_->compose());
         said += "snow_game: contact sheet (" + std::to_string(sheet_->size()) + " moments) " +
                 sheet.string() + "\n";
     }

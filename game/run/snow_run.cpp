@@ -115,7 +115,7 @@ bool write_exports(const Options& o, const snow::Simulation* sim) {
                 : snow::check_file_writable(*o.save_state);
         }
         return true;
-    } catch (const snow::ExportError& e) {
+    } catch (const snow::FileWriteError& e) {
         std::fprintf(stderr, "snow_run: %s: %s\n", flag, e.what());
         return false;
     }

@@ -327,6 +327,7 @@ SceneGeometry instance_scene(const GltfDocument& doc, std::vector<std::string>& 
         WorldNode node;
         node.index = i;
         node.name = n.name.empty() ? at : n.name;
+        node.world = world;
         node.position = to_float3(glm::dvec3(world[3]), at, "the origin");
         if (n.mesh) {
             add_mesh(doc, *n.mesh, at, world, node, budget, warnings);

@@ -7,6 +7,7 @@
 #include "game/scene/scene_document.hpp"
 #include "systems/geometry/geometry.hpp"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct WorldPrimitive {
 struct WorldNode {
     std::size_t index = 0; ///< into the file's `nodes`
     std::string name;
+    glm::dmat4 world{1.0};                  ///< its parents' transforms times its own
     glm::vec3 position{0.0f};               ///< world-space origin (for lights)
     std::vector<WorldPrimitive> primitives; ///< empty without a mesh of triangles
     Aabb bounds;                            ///< of all primitives; meaningful when non-empty

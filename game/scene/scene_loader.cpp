@@ -1,17 +1,14 @@
 // Scene loading as one straight pipeline, OSS-Fuzz cgltf style:
-//   read bytes → split the container (.gltf text or .glb chunks) → parse the
-//   JSON once → read glTF's objects and the snow schema from that one parse →
-//   load buffer bytes → instance the geometry (every accessor range checked)
-//   → create the simulation.
+//   read bytes → parse_scene (split the container, parse the JSON once, read
+//   glTF's objects and the snow schema, load buffer bytes, instance the
+//   geometry with every accessor range checked) → create the simulation.
 // Any failure is one message "<file>: <field> <problem>" and no Simulation
 // (never a partly built one).
 #include <snow/scene.hpp>
 
-#include "game/scene/scene_buffers.hpp"
 #include "game/scene/scene_build.hpp"
-#include "game/scene/scene_container.hpp"
+#include "game/scene/scene_parse.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,46 +19,6 @@ namespace snow {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// Deepest array/object nesting accepted, checked before parsing. Scenes need
-/// under 10; the cap keeps hostile nesting from costing memory and time.
-constexpr int max_json_depth = 64;
-
-/// Deepest nesting of [ and { outside strings (a scan, no recursion).
-int json_depth(std::string_view text) {
-    int depth = 0, deepest = 0;
-    bool in_string = false, escaped = false;
-    for (const char c : text) {
-        if (in_string) {
-            if (escaped) {
-                escaped = false;
-            } else if (c == '\\') {
-                escaped = true;
-            } else if (c == '"') {
-                in_string = false;
-            }
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            deepest = std::max(deepest, ++depth);
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return deepest;
-}
-
-Json parse_json(std::string_view text) {
-    try {
-        return Json::parse(text.begin(), text.end());
-    } catch (const Json::exception& e) {
-        // Drop nlohmann's "[json.exception.parse_error.101] " tag.
-        std::string what = e.what();
-        const std::size_t tag = what.find("] ");
-        throw SceneError("not valid JSON: " +
-                         (tag == std::string::npos ? what : what.substr(tag + 2)));
-    }
-}
 
 /// The geometry with each instanced node's role and light, and the chosen
 /// scene's settings.
@@ -89,26 +46,8 @@ SceneDescription describe(SceneGeometry geometry, const SceneSchema& schema) {
 /// The pipeline on bytes already in memory; `folder` empty forbids files.
 void load_bytes(std::string_view bytes, const std::string& folder, bool must_be_glb,
                 const SceneOverrides& overrides, SceneLoadResult& result) {
-    if (bytes.size() > max_scene_file_bytes) {
-        throw SceneError("is " + std::to_string(bytes.size()) +
-                         " bytes; scene files may have at most " +
-                         std::to_string(max_scene_file_bytes));
-    }
-    const SceneSource source =
-        must_be_glb || is_glb(bytes) ? split_glb(bytes) : SceneSource{bytes, std::nullopt};
-    if (source.json.size() > max_scene_bytes) {
-        throw SceneError("has " + std::to_string(source.json.size()) +
-                         " bytes of JSON; scenes may have at most " +
-                         std::to_string(max_scene_bytes));
-    }
-    if (json_depth(source.json) > max_json_depth) {
-        throw SceneError("JSON nests deeper than " + std::to_string(max_json_depth) + " levels");
-    }
-    const Json doc = parse_json(source.json);
-    GltfDocument gltf = read_document(doc, result.warnings);
-    const SceneSchema schema = read_schema(doc);
-    load_buffers(gltf, {source.bin, folder}, result.warnings);
-    const SceneDescription d = describe(instance_scene(gltf, result.warnings), schema);
+    ParsedScene parsed = parse_scene(bytes, folder, must_be_glb, result.warnings);
+    const SceneDescription d = describe(std::move(parsed.geometry), parsed.schema);
     if (!d.geometry.scene_name.empty()) {
         result.name = d.geometry.scene_name;
     }

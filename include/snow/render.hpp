@@ -209,7 +209,13 @@ struct Image {
     }
 };
 
-/// Writes `image` as a PNG; throws RenderError naming the path on failure.
+/// `image` as the bytes of a PNG file, for a host that stores them itself;
+/// throws RenderError when its size does not match its data.
+[[nodiscard]] std::vector<std::uint8_t> encode_png(const Image& image);
+
+/// Writes `image` as a PNG, all or nothing (a temporary file beside `path`,
+/// flushed and renamed into place); throws RenderError naming the path and
+/// the step that failed.
 void write_png(const std::filesystem::path& path, const Image& image);
 
 /// Reads a PNG as RGBA8; throws RenderError naming the path. For trusted files

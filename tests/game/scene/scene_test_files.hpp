@@ -148,6 +148,22 @@ inline void put_u32(std::string& out, std::uint32_t v) {
     }
 }
 
+/// `bytes` with the little-endian u32 at `offset` replaced.
+inline std::string with_u32(std::string bytes, std::size_t offset, std::uint32_t v) {
+    std::string le;
+    put_u32(le, v);
+    bytes.replace(offset, 4, le);
+    return bytes;
+}
+
+inline std::uint32_t u32_at(const std::string& bytes, std::size_t offset) {
+    std::uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) {
+        v = (v << 8) | static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(i)]);
+    }
+    return v;
+}
+
 /// A .glb: header, the JSON chunk (space-padded) and, when `bin` is not
 /// empty, the BIN chunk (zero-padded), as glTF 2.0 §4.4 lays them out.
 inline std::string glb(std::string json, std::vector<unsigned char> bin = {}) {

@@ -31,22 +31,6 @@ std::string village_glb() {
     return gltf_to_glb(read_text(asset_path("village.gltf")));
 }
 
-/// `bytes` with the little-endian u32 at `offset` replaced.
-std::string with_u32(std::string bytes, std::size_t offset, std::uint32_t v) {
-    std::string le;
-    put_u32(le, v);
-    bytes.replace(offset, 4, le);
-    return bytes;
-}
-
-std::uint32_t u32_at(const std::string& bytes, std::size_t offset) {
-    std::uint32_t v = 0;
-    for (int i = 3; i >= 0; --i) {
-        v = (v << 8) | static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(i)]);
-    }
-    return v;
-}
-
 std::map<std::string, const MeshRenderable*> meshes_by_name(const SceneVisuals& v) {
     std::map<std::string, const MeshRenderable*> out;
     for (const MeshRenderable& m : v.meshes) {
