@@ -65,7 +65,7 @@ std::vector<Row> roof_load_by_pitch(const Plan&) {
                            Pitch{60.0, 0.0, 0.1, "0"}}) {
         rows.push_back({"roof / ground load, pitch " + number("%.0f", p.degrees) + "°",
                         std::string("μ1 = ") + p.code + " [EN1991]",
-                        "plane roof, still-air snowfall to 1 kN/m² on the ground",
+                        "plane roof, still-air snowfall to 1 kN/m² on the ground, loads averaged over it",
                         roof_over_ground(p.degrees), "", p.low, p.high});
     }
     return rows;
