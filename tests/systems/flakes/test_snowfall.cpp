@@ -4,11 +4,14 @@
 #include "systems/core/units.hpp"
 #include "systems/flakes/snowfall.hpp"
 #include "tests/support/box_world.hpp"
+#include "tests/support/find_flake.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace snow {
 namespace {
@@ -82,6 +85,45 @@ TEST(Snowfall, TerminalSpeedEmergesFromDragAndGrowsWithSize) {
     // Bigger flakes fall faster: 10 mm over 2 mm is 5^0.16 [LH74].
     EXPECT_NEAR(fall_speed(e.crystal, 0.01f) / fall_speed(e.crystal, 0.002f), std::pow(5.0, 0.16),
                 1e-5);
+}
+
+TEST(Snowfall, SmallFlakesDriftFartherInWindThanBigOnes) {
+    // Drag set for the size's terminal speed [LH74]: in a steady 3 m/s wind a
+    // flake falling 4 m at v(D) is carried 3·4/v(D) downwind, 15 m for 1 mm
+    // (0.80 m/s) and 9.3 m for 20 mm (1.29 m/s).
+    SimConfig c;
+    c.bounds = {{-2.0f, 0.0f, -2.0f}, {30.0f, 5.0f, 2.0f}};
+    Simulation sim(c);
+    Wind w;
+    w.base = w.current = {3.0f, 0.0f, 0.0f};
+    w.walk = 0.0f;
+    sim.set_wind(w);
+    const CrystalType crystal = Emitter{}.crystal;
+    std::vector<std::pair<std::uint32_t, float>> flakes; // id, size
+    for (const float size : {0.001f, 0.02f}) {
+        FlakeSpec spec;
+        spec.position = {0.0f, 4.0f, 0.0f};
+        spec.velocity = {3.0f, -fall_speed(crystal, size), 0.0f};
+        spec.k_over_m = 9.81f / fall_speed(crystal, size);
+        spec.size = size;
+        const auto slot = sim.place_flake(spec);
+        ASSERT_TRUE(slot);
+        flakes.emplace_back(flake_pool(sim).id[*slot], size);
+    }
+    std::vector<float> last_x(flakes.size(), 0.0f);
+    for (int t = 0; t < 600; ++t) {
+        for (std::size_t i = 0; i < flakes.size(); ++i) {
+            if (const auto slot = test::slot_of(flake_pool(sim), flakes[i].first)) {
+                last_x[i] = flake_pool(sim).px[*slot];
+            }
+        }
+        sim.tick();
+    }
+    for (std::size_t i = 0; i < flakes.size(); ++i) {
+        const float expected = 3.0f * 4.0f / fall_speed(crystal, flakes[i].second);
+        EXPECT_NEAR(last_x[i], expected, 0.03f * expected) << "size " << flakes[i].second;
+    }
+    EXPECT_GT(last_x[0], 1.5f * last_x[1]);
 }
 
 TEST(Snowfall, ParcelsWeighTheirSizesMassTimesTheirMultiplicity) {
