@@ -47,7 +47,7 @@ seconds=$(( $(date +%s) - start ))
     echo "snow density by air temperature (snow is 100 kg/m³ everywhere), and the"
     echo "roof at 40°, which one friction and one adhesion cannot hold to the code's"
     echo "gradual decline (docs/cover_and_bodies.md, roofs that slide). Not yet"
-    echo "probed: settling, transport flux, the field's ground, drifts, convergence."
+    echo "probed: settling, transport flux, drifts, convergence."
     echo
     cat "$table"
 } >"$target"

@@ -45,5 +45,7 @@ struct Probe {
 [[nodiscard]] std::vector<Row> fresh_snow_density(const Plan& plan);
 [[nodiscard]] std::vector<Row> pile_flank_angle(const Plan& plan);
 [[nodiscard]] std::vector<Row> roof_load_by_pitch(const Plan& plan);
+/// Still air in a closed building and the reattachment behind a cube [MT93].
+[[nodiscard]] std::vector<Row> ground_wind(const Plan& plan);
 
 } // namespace snow::validation

@@ -1,9 +1,12 @@
 // wind field obstacles: the grid cells colliders fill. Boxes cover the cells
 // between their faces rounded to the nearest cell face, spheres the cells
 // whose centres they contain, meshes the cells their triangles pass through
-// (a shell: air cannot cross it, so what it encloses needs no filling). A
-// collider thinner than a cell still fills one, so a fence blocks the wind.
+// (a shell: air cannot cross it). A collider thinner than a cell still fills
+// one, so a fence blocks the wind. The ground surfaces fill the columns under
+// them, and air that no open side reaches (inside a closed building) is
+// filled too (docs/wind_field.md "Obstacles").
 #include "systems/geometry/colliders.hpp"
+#include "systems/snowpack/snow_surface.hpp"
 #include "systems/wind/wind_field_solver.hpp"
 
 #include <algorithm>
@@ -116,11 +119,96 @@ struct Marker {
     }
 };
 
+/// Fills each column under a ground surface (one lying on no solid) up to
+/// the last cell whose centre is at or below its bare top: the top rounded
+/// to the nearest cell face, as a box's faces are. The air then flows over
+/// the terrain, not over the bounds floor under it, and never under a
+/// building standing on it. Bare tops only: snow changes every tick, the
+/// mask only with the geometry.
+void fill_ground(const World& w, const WindField& f, WindFieldSolver& s) {
+    const auto nx = static_cast<std::int32_t>(f.n[0]), ny = static_cast<std::int32_t>(f.n[1]),
+               nz = static_cast<std::int32_t>(f.n[2]);
+    s.ground_cells.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz), 0);
+    w.each<SnowSurface, SurfaceOf>([&](Entity, const SnowSurface& g, const SurfaceOf& of) {
+        if (!of.owner.is_null()) {
+            return;
+        }
+        for (std::int32_t k = 0; k < nz; ++k) {
+            for (std::int32_t i = 0; i < nx; ++i) {
+                const float x = f.origin.x + (static_cast<float>(i) + 0.5f) / f.inv_cell.x;
+                const float z = f.origin.z + (static_cast<float>(k) + 0.5f) / f.inv_cell.z;
+                std::uint32_t ix = 0, iz = 0;
+                if (!g.cell_at(x, z, ix, iz) || g.is_void(g.index(ix, iz))) {
+                    continue;
+                }
+                const double top = g.height(g.base_level[g.index(ix, iz)]);
+                const double cells = std::floor((top - f.origin.y) * f.inv_cell.y + 0.5);
+                auto& filled = s.ground_cells[static_cast<std::size_t>(k * nx + i)];
+                filled =
+                    std::max(filled, static_cast<std::int32_t>(std::clamp(cells, 0.0, 1.0 * ny)));
+            }
+        }
+    });
+    for (std::int32_t k = 0; k < nz; ++k) {
+        for (std::int32_t i = 0; i < nx; ++i) {
+            for (std::int32_t j = 0; j < s.ground_cells[static_cast<std::size_t>(k * nx + i)];
+                 ++j) {
+                s.solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
+            }
+        }
+    }
+}
+
+/// Turns air that no open side (x, z or the top) reaches through air into
+/// solid: inside a closed mesh building, or walls standing on the ground all
+/// round. There the projection could never clear the gust shift it is given
+/// (docs/wind_field.md "The solver"), and no wind belongs.
+void fill_enclosed(const WindField& f, WindFieldSolver& s) {
+    constexpr std::uint8_t air = 0, reached = 2;
+    const Lattice& c = f.centre;
+    Vector<std::uint8_t>& m = s.solid;
+    const auto is_ghost = [&](std::int32_t i, std::int32_t j, std::int32_t k) {
+        return i == 0 || j == 0 || k == 0 || i == c.dim[0] - 1 || j == c.dim[1] - 1 ||
+               k == c.dim[2] - 1;
+    };
+    s.reach.clear();
+    for (std::int32_t k = 0; k < c.dim[2]; ++k) {
+        for (std::int32_t j = 0; j < c.dim[1]; ++j) {
+            for (std::int32_t i = 0; i < c.dim[0]; ++i) {
+                const std::int32_t q = c.index(i, j, k);
+                if (is_ghost(i, j, k)) {
+                    m[static_cast<std::size_t>(q)] = reached; // never entered, air again below
+                } else if (m[static_cast<std::size_t>(q)] == air &&
+                           (i == 1 || k == 1 || i == c.dim[0] - 2 || k == c.dim[2] - 2 ||
+                            j == c.dim[1] - 2)) {
+                    m[static_cast<std::size_t>(q)] = reached;
+                    s.reach.push_back(q);
+                }
+            }
+        }
+    }
+    while (!s.reach.empty()) {
+        const std::int32_t q = s.reach.back();
+        s.reach.pop_back();
+        for (int a = 0; a < 3; ++a) {
+            for (const std::int32_t r : {q - c.stride(a), q + c.stride(a)}) {
+                if (m[static_cast<std::size_t>(r)] == air) {
+                    m[static_cast<std::size_t>(r)] = reached;
+                    s.reach.push_back(r);
+                }
+            }
+        }
+    }
+    for (auto& cell : m) {
+        cell = cell == reached ? 0 : 1;
+    }
+}
+
 } // namespace
 
-void mark_obstacles(const World& w, const WindField& f, Vector<std::uint8_t>& solid) {
-    solid.assign(f.centre.size(), 0);
-    Marker m{f, solid};
+void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s) {
+    s.solid.assign(f.centre.size(), 0);
+    Marker m{f, s.solid};
     w.each<BoxCollider>([&](Entity, const BoxCollider& b) { m.box(b.box); });
     w.each<SphereCollider>([&](Entity, const SphereCollider& s) { m.sphere(s); });
     w.each<MeshCollider>([&](Entity, const MeshCollider& mesh) {
@@ -128,6 +216,8 @@ void mark_obstacles(const World& w, const WindField& f, Vector<std::uint8_t>& so
             m.triangle(mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]);
         }
     });
+    fill_ground(w, f, s);
+    fill_enclosed(f, s);
 }
 
 } // namespace snow

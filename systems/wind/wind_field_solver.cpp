@@ -83,6 +83,37 @@ void fill_ghosts(Vector<float>& d, const Lattice& l, float inflow, std::uint8_t 
     }
 }
 
+/// The ground is a wall the air slides along, as the floor is: the faces
+/// along it in its top cells (between two columns the ground fills to the
+/// same height) hold the air's above them, as the floor's ghosts do, so
+/// diffusion and advection feel no drag there. A slower wind near the
+/// ground would need a law (docs/wind_field.md "The ground").
+void slide_over_ground(const WindField& f, const WindFieldSolver& s, int a, Vector<float>& v) {
+    if (a == 1) {
+        return;
+    }
+    const Lattice& l = f.face[a];
+    const auto nx = static_cast<std::int32_t>(f.n[0]), nz = static_cast<std::int32_t>(f.n[2]);
+    const auto filled = [&](std::int32_t i, std::int32_t k) {
+        const bool in = i >= 0 && k >= 0 && i < nx && k < nz;
+        return in ? s.ground_cells[static_cast<std::size_t>(k * nx + i)] : -1;
+    };
+    const std::int32_t up = l.stride(1);
+    const std::int32_t faces = a == 0 ? nx + 1 : nz + 1, across = a == 0 ? nz : nx;
+    for (std::int32_t c = 0; c < across; ++c) {
+        for (std::int32_t e = 0; e < faces; ++e) {
+            // The face's two columns along a (one of them off the grid at its ends).
+            const std::int32_t lo = a == 0 ? filled(e - 1, c) : filled(c, e - 1);
+            const std::int32_t hi = a == 0 ? filled(e, c) : filled(c, e);
+            const std::int32_t h = lo < 0 ? hi : (hi < 0 ? lo : (lo == hi ? lo : 0));
+            if (h > 0) {
+                const std::int32_t q = a == 0 ? l.index(e, h, c + 1) : l.index(c + 1, h, e);
+                v[static_cast<std::size_t>(q)] = v[static_cast<std::size_t>(q + up)];
+            }
+        }
+    }
+}
+
 /// Inflow faces hold the wind, floor faces zero, faces at obstacles zero.
 void enforce(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow, std::uint8_t sides) {
     for (int a = 0; a < 3; ++a) {
@@ -463,9 +494,11 @@ void subtract_gradient(WindField& f) {
 }
 
 /// Cell-centre velocity: the mean of each cell's two faces per component.
-void centre_velocity(WindField& f, const glm::vec3& inflow, std::uint8_t sides) {
+void centre_velocity(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow,
+                     std::uint8_t sides) {
     const Lattice& c = f.centre;
     const std::int32_t i1 = end(c, 0);
+    const auto nx = static_cast<std::int32_t>(f.n[0]), nz = static_cast<std::int32_t>(f.n[2]);
     for (int a = 0; a < 3; ++a) {
         const Lattice& l = f.face[a];
         const float* v = f.velocity[a].data();
@@ -478,6 +511,18 @@ void centre_velocity(WindField& f, const glm::vec3& inflow, std::uint8_t sides) 
             }
         });
         fill_ghosts(f.at_centre[a], c, inflow[a], sides);
+        // The ground is a wall the air slides along, as the floor is: its top
+        // cell reads as the air above it, as the floor's ghosts do. A slower
+        // wind near the ground would need a law (docs/wind_field.md).
+        for (std::int32_t k = 0; k < nz; ++k) {
+            for (std::int32_t i = 0; i < nx; ++i) {
+                const std::int32_t filled = s.ground_cells[static_cast<std::size_t>(k * nx + i)];
+                if (filled > 0) {
+                    const std::int32_t q = c.index(i + 1, filled, k + 1);
+                    out[q] = out[q + c.stride(1)];
+                }
+            }
+        }
     }
     pack_centre(f);
 }
@@ -567,6 +612,8 @@ std::uint8_t inflow_sides(const glm::vec3& wind) {
 void reserve_solver(const WindField& f, WindFieldSolver& s) {
     const std::size_t cells = f.centre.size();
     s.solid.reserve(cells);
+    s.reach.reserve(cells); // a cell is pushed at most once
+    s.ground_cells.reserve(std::size_t{f.n[0]} * f.n[2]);
     s.inv_diag.reserve(cells);
     s.divergence.reserve(cells);
     for (int a = 0; a < 3; ++a) {
@@ -601,6 +648,11 @@ void apply_obstacles(WindField& f, WindFieldSolver& s) {
             }
         }
     }
+    // As every step leaves them: a restore rebuilds the solver and must
+    // keep the saved bits.
+    for (const int a : {0, 2}) {
+        slide_over_ground(f, s, a, f.velocity[a]);
+    }
     s.divergence.assign(c.size(), 0.0f);
     s.diag_sides = 0xff; // rebuilt at the next step
 }
@@ -623,6 +675,7 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
             advect(f, a, f.velocity[a], s.advected[a], dt);
             std::swap(f.velocity[a], s.advected[a]);
             fill_ghosts(f.velocity[a], f.face[a], inflow[a], sides); // diffusion reads them
+            slide_over_ground(f, s, a, f.velocity[a]);
             diffuse(f, a, f.velocity[a], s.advected[a], mix);
         }
         enforce(f, s, inflow, sides);
@@ -630,8 +683,9 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
     }
     for (int a = 0; a < 3; ++a) {
         fill_ghosts(f.velocity[a], f.face[a], inflow[a], sides);
+        slide_over_ground(f, s, a, f.velocity[a]); // the next advection reads them
     }
-    centre_velocity(f, inflow, sides);
+    centre_velocity(f, s, inflow, sides);
     f.inflow = inflow;
     ++f.steps;
 }

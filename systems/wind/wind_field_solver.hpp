@@ -37,19 +37,26 @@ struct ColourSplit {
 /// Everything here follows from the geometry and the field's state.
 struct WindFieldSolver {
     bool built = false;
-    std::uint64_t built_from_solids = 0; ///< SourceVersions::solids it was built from
-    Vector<std::uint8_t> solid;          ///< per cell of the centre lattice (ghosts 0)
-    Vector<std::int32_t> closed[3];      ///< per component: faces touching a solid cell
-    Vector<float> inv_diag;              ///< per cell: 1 / Σ coefficients of its open neighbours
-    std::uint8_t diag_sides = 0xff;      ///< inflow sides inv_diag was built for
-    ColourSplit split;                   ///< the sweeps' arrays, by colour
-    Vector<float> advected[3];           ///< semi-Lagrangian output, swapped with the velocity
+    std::uint64_t built_from_solids = 0;   ///< SourceVersions::solids it was built from
+    std::uint64_t built_from_surfaces = 0; ///< SourceVersions::surfaces it was built from
+    Vector<std::uint8_t> solid;            ///< per cell of the centre lattice (ghosts 0)
+    /// Per column (x fastest): how many cells from the bottom the ground
+    /// fills (0: none); the top one reads as the air above it.
+    Vector<std::int32_t> ground_cells;
+    Vector<std::int32_t> reach;     ///< the enclosed-air search's stack
+    Vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
+    Vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
+    std::uint8_t diag_sides = 0xff; ///< inflow sides inv_diag was built for
+    ColourSplit split;              ///< the sweeps' arrays, by colour
+    Vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
     Vector<float> divergence;
 };
 
-/// Marks the cells of the centre lattice that colliders fill: boxes, spheres
-/// and triangle meshes (wind_field_obstacles.cpp). `solid` is resized.
-void mark_obstacles(const World& w, const WindField& f, Vector<std::uint8_t>& solid);
+/// Marks the cells of the centre lattice that are not air (into s.solid,
+/// s.ground_cells; wind_field_obstacles.cpp): what colliders fill (boxes,
+/// spheres, triangle meshes), the cells at or below the ground surfaces and
+/// air no open side reaches (inside a closed building).
+void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s);
 
 /// Gives `s` room for everything the field's obstacle rebuilds and steps
 /// write (prepare_wind_field): then neither allocates.

@@ -1,6 +1,7 @@
 // wind_field: steps the declared field every update_every ticks, after the
 // global wind moved (its walk and gusts are the inflow) and before flakes
-// integrate in it. Obstacles are re-marked when the geometry changed.
+// integrate in it. Obstacles are re-marked when the solids or the surfaces
+// (the ground) changed.
 #include "systems/api/systems.hpp"
 #include "systems/core/sim_config.hpp"
 #include "systems/core/source_versions.hpp"
@@ -25,12 +26,13 @@ void wind_field_system(World& w) {
     prepare_wind_field(w);
     WindField& f = w.resource<WindField>();
     auto* s = &w.resource<WindFieldSolver>();
-    const std::uint64_t solids = source_versions(w).solids;
-    if (!s->built || s->built_from_solids != solids) {
-        mark_obstacles(w, f, s->solid);
+    const SourceVersions v = source_versions(w);
+    if (!s->built || s->built_from_solids != v.solids || s->built_from_surfaces != v.surfaces) {
+        mark_obstacles(w, f, *s);
         apply_obstacles(f, *s);
         s->built = true;
-        s->built_from_solids = solids;
+        s->built_from_solids = v.solids;
+        s->built_from_surfaces = v.surfaces;
     }
     if (f.wait > 0) {
         --f.wait;
