@@ -2,6 +2,7 @@
 
 #include "systems/api/simulation_internals.hpp"
 #include "systems/wind/wind_field.hpp"
+#include "tests/support/steady_field.hpp"
 
 #include <cmath>
 #include <vector>
@@ -54,16 +55,8 @@ GroundCubeWake ground_cube_wake(CubeShape shape, double spin_up_s, double mean_s
     } else {
         sim.add_mesh_collider(shell(cube));
     }
-    Wind wind;
-    wind.base = wind.current = {free_stream, 0.0f, 0.0f};
-    wind.walk = 0.0f;
-    wind.max_deviation = 0.0f;
-    sim.set_wind(wind);
-    WindFieldDef def;
-    def.cells_x = 96;
-    def.cells_y = 16;
-    def.cells_z = 48;
-    sim.set_wind_field(def);
+    const test::FieldGrid grid{96, 16, 48, 4};
+    test::blow_steadily_through_field(sim, free_stream, grid);
 
     std::vector<glm::vec3> inside, line;
     for (float x = cube.min.x + 0.5f * cell; x < cube.max.x; x += cell) {
@@ -80,7 +73,7 @@ GroundCubeWake ground_cube_wake(CubeShape shape, double spin_up_s, double mean_s
     };
     sim.run(ticks(spin_up_s));
     const WindField& f = world_of(sim).resource<WindField>();
-    const int every = static_cast<int>(def.update_every);
+    const int every = static_cast<int>(grid.update_every);
     const int samples = ticks(mean_s) / every;
     double inside_speed = 0.0;
     std::vector<double> line_u(line.size(), 0.0);

@@ -6,6 +6,7 @@
 #include "systems/api/simulation_internals.hpp"
 #include "systems/wind/wind_field_solver.hpp"
 #include "tests/scenes/ground_wind.hpp"
+#include "tests/support/rect_surface.hpp"
 #include "tests/support/steady_field.hpp"
 
 #include <gtest/gtest.h>
@@ -72,13 +73,8 @@ TEST(WindGround, OpenGroundAboveTheFloorKeepsTheFreeStreamDownToItsTop) {
     SimConfig cfg;
     cfg.bounds = {{-6.0f, -0.5f, -6.0f}, {18.0f, 7.5f, 6.0f}};
     Simulation sim(cfg);
-    SurfaceDef ground;
-    ground.x0 = -6.0f;
-    ground.z0 = -6.0f;
-    ground.size_x = 24.0f;
-    ground.size_z = 12.0f;
+    SurfaceDef ground = test::rect_surface(-6.0f, -6.0f, 24.0f, 12.0f, 0.0f, false);
     ground.cell = 0.25f;
-    ground.spills = false;
     sim.add_surface(ground);
     test::blow_steadily_through_field(sim, 2.0f, {48, 16, 24, 4});
     sim.run(600);
