@@ -5,6 +5,8 @@
 // NAME CALLS HASH. scripts/check_aarch64.sh compares the x86-64 and aarch64
 // lines; any difference is a result that differs between the two.
 // Exit status: 0 ok, 2 any argument.
+#include "systems/flakes/snowfall.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -83,21 +85,34 @@ int main(int argc, char**) {
         std::fprintf(stderr, "usage: snow_libm_hash (no arguments)\n");
         return 2;
     }
-    // spawn_system: mass = lo·(hi/lo)^u with u = k/2^24 (rng_uniform): every u
-    // for the default emitter (5 g / 0.005 g), then random ratios and u.
+    // spawn (systems/flakes/snowfall.cpp): a parcel's size from its draw u
+    // (exp, log1p: the clipped exponential spectrum), then its fall speed and
+    // mass (pow), through the simulation's own functions: every 2^-20 of u for
+    // the default spectrum and each crystal type, then random spectra.
     {
         Digest d;
-        const float ratio = 5.0f / 0.005f;
-        for (std::uint32_t k = 0; k < (1u << 24); ++k) {
-            d.add(std::pow(ratio, static_cast<float>(k) * (1.0f / 16777216.0f)));
-        }
+        const auto add_parcel = [&d](const snow::Emitter& e, float u) {
+            const float size = snow::size_at(e, u);
+            d.add(size);
+            d.add(snow::fall_speed(e.crystal, size));
+            d.add(snow::flake_mass_mg(e.crystal, size));
+        };
         Draws r{1};
-        for (std::uint32_t i = 0; i < pairs; ++i) {
-            const float ratio_i = r.uniform_float(1.0f, 1.0e6f);
-            const auto k = static_cast<std::uint32_t>(r.uniform(0.0, 16777216.0));
-            d.add(std::pow(ratio_i, static_cast<float>(k) * (1.0f / 16777216.0f)));
+        for (const snow::CrystalType crystal :
+             {snow::CrystalType::dendrite_aggregate, snow::CrystalType::rimed_aggregate}) {
+            snow::Emitter e;
+            e.crystal = crystal;
+            for (std::uint32_t k = 0; k < (1u << 20); ++k) {
+                add_parcel(e, static_cast<float>(k) * (1.0f / 1048576.0f));
+            }
+            for (std::uint32_t i = 0; i < pairs / 8; ++i) {
+                e.size_min = r.uniform_float(1.0e-4f, 0.01f);
+                e.size_max = e.size_min + r.uniform_float(0.0f, 0.05f);
+                e.size_mean = r.uniform_float(1.0e-4f, 0.02f);
+                add_parcel(e, r.uniform_float(0.0f, 1.0f));
+            }
         }
-        print("powf", d);
+        print("spawn", d);
     }
     // integrate (exponential rule): e^(−c·dt), c·dt >= 0, down to 0.
     print("expf", every_float(0.0f, 104.0f, 61, [](Digest& d, float x) { d.add(std::exp(-x)); }));

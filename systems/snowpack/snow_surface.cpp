@@ -80,8 +80,12 @@ SnowSurface make_surface(const SurfaceDef& def) {
     };
     s.edge_limit_units = depth_units(def.edge_limit);
     // Weight along the slope minus friction, per unit of plan load and g.
-    const double tan_pitch = std::hypot(double{def.slope_x}, double{def.slope_z});
-    const double cos_pitch = 1.0 / std::sqrt(1.0 + tan_pitch * tan_pitch);
+    // Squares of floats are exact in double and sqrt is correctly rounded:
+    // std::hypot's double code differs between x86-64 and aarch64 glibc
+    // (docs/toolchain.md "libm").
+    const double tan2 = double{def.slope_x} * def.slope_x + double{def.slope_z} * def.slope_z;
+    const double tan_pitch = std::sqrt(tan2);
+    const double cos_pitch = 1.0 / std::sqrt(1.0 + tan2);
     const double drive = cos_pitch * cos_pitch * (tan_pitch - def.slide_friction);
     s.slide_drive = def.spills && drive > 0.0 ? static_cast<float>(drive) : 0.0f;
     s.slide_adhesion = def.slide_adhesion;
