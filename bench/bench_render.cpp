@@ -94,7 +94,8 @@ SnowSurface snow_cover(std::uint32_t cells) {
     s.cell = 0.05f;
     s.nx = s.nz = cells;
     s.x0 = s.z0 = -0.5f * s.cell * static_cast<float>(cells);
-    s.unit_height = static_cast<float>(unit_kg / (fresh_snow_density * s.cell * s.cell));
+    s.unit_height = static_cast<float>(
+        unit_kg / (fresh_snow_density(SimConfig{}.air_temperature) * s.cell * s.cell));
     s.base_level.resize(static_cast<std::size_t>(cells) * cells);
     s.snow.resize(s.base_level.size());
     for (std::uint32_t iz = 0; iz < cells; ++iz) {

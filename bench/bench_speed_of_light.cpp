@@ -156,7 +156,8 @@ class SpeedOfLight {
             pool_.mass_units[i] = 1 + rng_below(key, 4, 40);
         }
         tops_.unit_height =
-            static_cast<float>(unit_kg / (fresh_snow_density * (extent / side) * (extent / side)));
+            static_cast<float>(unit_kg / (fresh_snow_density(SimConfig{}.air_temperature) *
+                                          (extent / side) * (extent / side)));
         tops_.top.assign(static_cast<std::size_t>(side) * side, 0.0f);
         tops_.snow.assign(tops_.top.size(), 0);
         deposits_.resize(flakes);

@@ -43,11 +43,10 @@ seconds=$(( $(date +%s) - start ))
     echo
     echo "A row is *in band* when our value lies inside the band the source allows"
     echo "(the source's own range where it gives one, otherwise the band stated in"
-    echo "the row). The table is where issue #30 stands. Not in band yet: fresh"
-    echo "snow density by air temperature (snow is 100 kg/m³ everywhere), and the"
+    echo "the row). The table is where issue #30 stands. Not in band yet: the"
     echo "roof at 40°, which one friction and one adhesion cannot hold to the code's"
     echo "gradual decline (docs/cover_and_bodies.md, roofs that slide). Not yet"
-    echo "probed: settling, transport flux, drifts, convergence."
+    echo "probed: wind-packed snow's density, transport flux, drifts, convergence."
     echo
     cat "$table"
 } >"$target"

@@ -1,7 +1,7 @@
 // Settled snow against measurements: the density of fresh snow by air
-// temperature [HP98], the flanks of a pile poured at one point [NSA]
-// (natural slope angle of loose snow, 37–53° by grain type) and what a roof
-// keeps by its pitch [EN1991] (the code's roof shape coefficient).
+// temperature [HP98] and after days of settling [CP10], the flanks of a pile poured at one point
+// [NSA] (natural slope angle of loose snow, 37–53° by grain type) and what a roof keeps by its
+// pitch [EN1991] (the code's roof shape coefficient).
 #include "bench/validation/validation.hpp"
 
 #include "systems/core/units.hpp"
@@ -18,25 +18,60 @@
 
 namespace snow::validation {
 
-std::vector<Row> fresh_snow_density(const Plan&) {
-    SimConfig config;
-    Simulation sim(config);
-    SurfaceDef def;
-    def.size_x = def.size_z = 0.1f;
-    def.cell = 0.1f;
-    const SurfaceId surface = sim.add_surface(def);
-    const std::uint32_t units = 10000;
-    sim.add_settled_snow(surface, 0, 0, units);
-    const SnowGrid g = sim.surface(surface);
-    const double density = units * unit_kg / (g.depth(0) * g.cell * g.cell);
+namespace {
+
+/// A simulation at `air_c` with one flat 10 cm cell of ground holding
+/// `metres` of fresh snow.
+struct OneCell {
+    Simulation sim;
+    SurfaceId surface;
+    std::uint32_t units = 0;
+
+    OneCell(double air_c, float dt, double metres) : sim(config(air_c, dt)) {
+        SurfaceDef def;
+        def.size_x = def.size_z = def.cell = 0.1f;
+        def.spills = false; // ground: its edges keep their snow
+        surface = sim.add_surface(def);
+        units = static_cast<std::uint32_t>(std::llround(metres / sim.surface(surface).unit_height));
+        sim.add_settled_snow(surface, 0, 0, units);
+    }
+    static SimConfig config(double air_c, float dt) {
+        SimConfig c;
+        c.air_temperature = static_cast<float>(air_c);
+        c.dt = dt;
+        return c;
+    }
+    /// The cell's density (kg/m³): its mass over the volume its depth gives.
+    [[nodiscard]] double density() const {
+        const SnowGrid g = sim.surface(surface);
+        return units * unit_kg / (g.depth(0) * g.cell * g.cell);
+    }
+};
+
+} // namespace
+
+std::vector<Row> fresh_density_by_temperature(const Plan&) {
     std::vector<Row> rows;
     for (const double t : {-10.0, -5.0, -1.0}) {
         const double rho = 67.92 + 51.25 * std::exp(t / 2.59);
         rows.push_back({"fresh snow density, air " + number("%.0f", t) + " °C",
                         "67.92 + 51.25·e^(T/2.59) = " + number("%.0f", rho) + " kg/m³ [HP98]",
-                        "snow added to a flat surface", density, "kg/m³", 0.75 * rho, 1.25 * rho});
+                        "10 cm of snow added to a flat surface",
+                        OneCell(t, SimConfig{}.dt, 0.1).density(), "kg/m³", 0.75 * rho,
+                        1.25 * rho});
     }
     return rows;
+}
+
+std::vector<Row> settled_density(const Plan&) {
+    // One-second ticks: five days are 432 000 ticks of a single cell.
+    constexpr double days = 5.0;
+    OneCell pack(-5.0, 1.0f, 1.0);
+    pack.sim.run(static_cast<std::uint64_t>(days * 86400.0));
+    return {{"snow density after " + number("%.0f", days) + " days of settling",
+             "settled snow: 200–300 kg/m³ [CP10]; Anderson's law [And76]",
+             "1 m of fresh snow at -5 °C on a flat surface", pack.density(), "kg/m³", 200.0,
+             350.0}};
 }
 
 std::vector<Row> pile_flank_angle(const Plan& plan) {
@@ -63,10 +98,11 @@ std::vector<Row> roof_load_by_pitch(const Plan&) {
     for (const Pitch& p : {Pitch{15.0, 0.7, 1.0, "0.8"}, Pitch{30.0, 0.7, 1.0, "0.8"},
                            Pitch{40.0, 0.33, 0.73, "0.53"}, Pitch{45.0, 0.2, 0.6, "0.4"},
                            Pitch{60.0, 0.0, 0.1, "0"}}) {
-        rows.push_back({"roof / ground load, pitch " + number("%.0f", p.degrees) + "°",
-                        std::string("μ1 = ") + p.code + " [EN1991]",
-                        "plane roof, still-air snowfall to 1 kN/m² on the ground, loads averaged over it",
-                        roof_over_ground(p.degrees), "", p.low, p.high});
+        rows.push_back(
+            {"roof / ground load, pitch " + number("%.0f", p.degrees) + "°",
+             std::string("μ1 = ") + p.code + " [EN1991]",
+             "plane roof, still-air snowfall to 1 kN/m² on the ground, loads averaged over it",
+             roof_over_ground(p.degrees), "", p.low, p.high});
     }
     return rows;
 }

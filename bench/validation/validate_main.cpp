@@ -59,8 +59,11 @@ int main(int argc, char** argv) {
         }
     }
     const Probe probes[] = {
-        {"fall speed and mass by size", flakes_by_size}, {"fresh snow density", fresh_snow_density},
-        {"pile flank angle", pile_flank_angle},          {"roof load by pitch", roof_load_by_pitch},
+        {"fall speed and mass by size", flakes_by_size},
+        {"fresh snow density", fresh_density_by_temperature},
+        {"settled snow density", settled_density},
+        {"pile flank angle", pile_flank_angle},
+        {"roof load by pitch", roof_load_by_pitch},
         {"wind over the ground", ground_wind},
     };
     try {

@@ -42,7 +42,10 @@ struct Probe {
 
 /// Fall speed and mass by size, from one still-air snowfall [LH74].
 [[nodiscard]] std::vector<Row> flakes_by_size(const Plan& plan);
-[[nodiscard]] std::vector<Row> fresh_snow_density(const Plan& plan);
+/// The density fresh snow lands at by air temperature [HP98].
+[[nodiscard]] std::vector<Row> fresh_density_by_temperature(const Plan& plan);
+/// The density of a snowpack after days of settling under its own weight [And76].
+[[nodiscard]] std::vector<Row> settled_density(const Plan& plan);
 [[nodiscard]] std::vector<Row> pile_flank_angle(const Plan& plan);
 [[nodiscard]] std::vector<Row> roof_load_by_pitch(const Plan& plan);
 /// Still air in a closed building and the reattachment behind a cube [MT93].

@@ -85,8 +85,9 @@ constexpr Field<SimConfig> simulation_rows[] = {
      }},
     {"bounds", &read_nested<&SimConfig::bounds, bounds_fields, reject>},
 };
-/// Smoothing sub-iterations are not part of the scene schema (docs/scenes.md).
-constexpr std::string_view simulation_unread[] = {"smoothing_iterations"};
+/// Smoothing sub-iterations and the settling step are quality knobs of the
+/// host, not part of the scene schema (docs/scenes.md).
+constexpr std::string_view simulation_unread[] = {"smoothing_iterations", "settle_interval"};
 constexpr Schema<SimConfig> simulation_schema{sim_config_fields, simulation_rows,
                                               simulation_unread};
 

@@ -51,6 +51,13 @@ struct SimConfig {
     /// Smoothing sub-iterations per surface per tick [WF §3]; a pile still
     /// moving after that many continues next tick.
     std::uint32_t smoothing_iterations = 64;
+    /// Air temperature (°C), fixed for the run: fresh snow lands at the
+    /// density this gives (docs/references.md [HP98]) and settles faster the
+    /// warmer it is [And76].
+    float air_temperature = -5.0f;
+    /// Seconds between two settling steps of every cell [And76]: the cost
+    /// of settling falls with it, its accuracy barely (docs/accuracy.md).
+    float settle_interval = 10.0f;
 };
 
 /// The particle types an emitter can make, each with its own mass and fall
@@ -181,7 +188,8 @@ struct BodyDef {
     bool snowball = false;
     /// Fraction in [0, 1] of the snow in its way that it packs down under it
     /// instead of pushing it aside (a boot, a tyre): the same units stand
-    /// lower, at up to packed_snow_density. 0 pushes it all into the rims.
+    /// lower, at up to max_packing times the fresh snow's density. 0 pushes
+    /// it all into the rims.
     float compaction = 0.0f;
     BodyMotion motion;
 };

@@ -158,6 +158,7 @@ void Simulation::Impl::build_schedule() {
     schedule.add("carve", carve_system, {needs<Body>(), needs<SnowSurface>()});
     schedule.add("wind_transport", wind_transport_system,
                  {wind_transport_declared, needs<SnowSurface>()});
+    schedule.add("settle", settle_system, {needs<SnowSurface>()});
     schedule.add("redistribute", redistribute_system, {needs<SnowSurface>()});
     schedule.add("spill", spill_system, {needs<SnowSurface>()});
     schedule.add("occlusion", occlusion_system, {needs<OcclusionCamera>()});
@@ -246,7 +247,7 @@ SurfaceId Simulation::add_surface(const SurfaceDef& def, ColliderId owner_id) {
     if (!owner.is_null() && !is_collider(impl_->world, owner)) {
         throw SimulationError("add_surface(owner)", "is not a living collider");
     }
-    SnowSurface surface = make_surface(def);
+    SnowSurface surface = make_surface(def, fresh_snow_density(impl_->world.resource<SimConfig>()));
     const Entity id = impl_->world.create();
     impl_->world.add<SnowSurface>(id, std::move(surface));
     impl_->world.add<SurfaceOf>(id, SurfaceOf{owner});
@@ -259,7 +260,8 @@ SurfaceId Simulation::add_surface(const SurfaceDef& def, ColliderId owner_id) {
 }
 
 CoverId Simulation::add_cover(const CoverDef& def) {
-    SnowSurface surface = make_cover_surface(def);
+    SnowSurface surface =
+        make_cover_surface(def, fresh_snow_density(impl_->world.resource<SimConfig>()));
     const Entity id = impl_->world.create();
     impl_->world.add<SnowSurface>(id, std::move(surface));
     SnowCover cover;

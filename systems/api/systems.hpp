@@ -25,6 +25,7 @@ void carve_system(
 void wind_transport_system(World& w); ///< wind_transport_system.cpp: the field's wind moves snow
 /// True when a wind field with transport is declared (wind_transport_system's need).
 [[nodiscard]] bool wind_transport_declared(const World& w);
+void settle_system(World& w);       ///< settle_system.cpp: snow settles under its weight [And76]
 void redistribute_system(World& w); ///< redistribute_system.cpp: Laplacian cap [WF §3]
 void spill_system(World& w);        ///< spill_system.cpp: edge overflow to lower surfaces
 void occlusion_system(World& w);    ///< occlusion.cpp: sky depth map [SKY]

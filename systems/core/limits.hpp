@@ -15,6 +15,9 @@ inline constexpr double max_dt = 1.0;                           ///< s per tick
 inline constexpr std::uint32_t max_flakes = 16u << 20;          ///< flake pool capacity
 inline constexpr unsigned max_threads = 256;                    ///< job pool workers
 inline constexpr std::uint32_t max_smoothing_iterations = 4096; ///< per surface per tick
+inline constexpr double min_air_temperature = -80.0;            ///< °C, colder than any snowfall
+inline constexpr double max_air_temperature = 40.0;             ///< °C
+inline constexpr double max_settle_interval = 3600.0;           ///< s between settling steps
 
 // -- settings structs --
 inline constexpr double max_emitter_rate = 1.0e8; ///< flakes per second

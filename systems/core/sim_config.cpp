@@ -64,6 +64,8 @@ void hash_state(StateHasher& h, const SimConfig& c) {
     out(c.bounds.max);
     out(c.max_flakes);
     out(c.smoothing_iterations);
+    out(c.air_temperature);
+    out(c.settle_interval);
 }
 
 } // namespace snow

@@ -33,9 +33,18 @@ inline constexpr FieldRule<SimConfig> sim_config_fields[] = {
     {"threads", &SimConfig::threads, between(1, max_threads)},
     {"smoothing_iterations", &SimConfig::smoothing_iterations,
      between(1, max_smoothing_iterations)},
+    {"air_temperature", &SimConfig::air_temperature,
+     between(min_air_temperature, max_air_temperature)},
+    {"settle_interval", &SimConfig::settle_interval, positive_up_to(max_settle_interval)},
 };
 
 [[nodiscard]] Invalid validate(const SimConfig& c);
+
+/// The density (kg/m³) snow lands at in this run: one level of every surface
+/// is one unit at it (SnowSurface::unit_height).
+[[nodiscard]] inline double fresh_snow_density(const SimConfig& c) {
+    return fresh_snow_density(c.air_temperature);
+}
 
 class StateHasher;
 /// Field by field, so no padding byte enters the hash. Not the thread count

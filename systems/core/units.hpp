@@ -2,6 +2,8 @@
 /// @brief Snow mass is counted in integer units so bookkeeping is exact.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace snow {
@@ -11,10 +13,13 @@ namespace snow {
 inline constexpr double unit_kg = 5.0e-6;
 inline constexpr std::uint32_t max_flake_units = 1000;
 
-/// Density of fresh snow (kg/m^3); turns settled units into depth.
-inline constexpr double fresh_snow_density = 100.0;
-/// Density of the most packed snow (kg/m^3): a snowball's, and the limit a
-/// body's compaction reaches.
+/// Density (kg/m^3) of snow falling through air at `air_c` °C: Hedstrom &
+/// Pomeroy 1998 (docs/references.md [HP98]), fitted for T <= 0 °C; warmer
+/// air gets the 0 °C value (there is no melt).
+[[nodiscard]] inline double fresh_snow_density(double air_c) {
+    return 67.92 + 51.25 * std::exp(std::min(air_c, 0.0) / 2.59);
+}
+/// Density of a snowball's packed snow (kg/m^3).
 inline constexpr double packed_snow_density = 400.0;
 
 } // namespace snow

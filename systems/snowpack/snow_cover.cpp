@@ -169,7 +169,7 @@ bool is_cover(const World& w, Entity e) {
     return w.has<SnowCover>(e);
 }
 
-SnowSurface make_cover_surface(const CoverDef& def) {
+SnowSurface make_cover_surface(const CoverDef& def, double fresh_density) {
     Invalid e = validate(def);
     if (e.empty()) {
         const double along_x = std::round((static_cast<double>(def.max_x) - def.min_x) / def.cell);
@@ -193,7 +193,7 @@ SnowSurface make_cover_surface(const CoverDef& def) {
     sd.laplacian_limit = def.laplacian_limit;
     sd.spills = false; // its border is no edge of anything; a cover spills at its drops
     sd.repose_deg = def.repose_deg;
-    SnowSurface s = make_surface(sd);
+    SnowSurface s = make_surface(sd, fresh_density);
     std::fill(s.base_level.begin(), s.base_level.end(), void_level);
     s.uniform_base = false; // the base follows the geometry (cover_system)
     s.closed.assign(s.cell_count(), closed_all);

@@ -62,9 +62,10 @@ void hash_state(StateHasher& h, const SnowCover& c, const SnowSurface& surface, 
 /// True for a cover's entity (its surface is snow over the geometry, not geometry).
 [[nodiscard]] bool is_cover(const World& w, Entity e);
 
-/// Builds a cover's surface (every cell void until the cover system first
-/// builds its base); throws SimulationError naming the bad field for invalid values.
-[[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def);
+/// Builds a cover's surface for snow that lands at `fresh_density` (kg/m³;
+/// every cell void until the cover system first builds its base); throws
+/// SimulationError naming the bad field for invalid values.
+[[nodiscard]] SnowSurface make_cover_surface(const CoverDef& def, double fresh_density);
 
 /// `cover.*` [ZCL]; max > min per axis is checked by validate().
 inline constexpr FieldRule<CoverDef> cover_fields[] = {

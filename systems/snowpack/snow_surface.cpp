@@ -27,10 +27,10 @@ std::uint32_t cells_per_side(Invalid& err, const char* field, double size, doubl
 
 } // namespace
 
-SnowSurface make_surface(const SurfaceDef& def) {
+SnowSurface make_surface(const SurfaceDef& def, double fresh_density) {
     Invalid e = validate(def);
     const double cell = def.cell;
-    const double unit_height = unit_kg / (fresh_snow_density * cell * cell);
+    const double unit_height = unit_kg / (fresh_density * cell * cell);
     if (e.empty() && !(std::isfinite(unit_height) && unit_height > 0.0)) {
         check::fail(e, "surface.cell", "large enough for a finite snow unit height", cell);
     }
@@ -60,6 +60,7 @@ SnowSurface make_surface(const SurfaceDef& def) {
     const std::size_t n = static_cast<std::size_t>(nx) * nz;
     s.base_level.resize(n);
     s.snow.assign(n, 0);
+    s.compacted.assign(n, 0); // settling packs every cell in time: sized here, no tick allocates
     for (std::uint32_t iz = 0; iz < nz; ++iz) {
         for (std::uint32_t ix = 0; ix < nx; ++ix) {
             const double y =

@@ -62,12 +62,12 @@ struct CellBox {
 /// flake and its edges are closed, so no snow ever reaches it.
 inline constexpr std::int64_t void_level = no_ground_level;
 
-/// How many times denser than fresh snow the most packed snow is.
+/// How many times denser than fresh snow (SimConfig::air_temperature) the
+/// most packed snow is: what bodies pack and settling reach at most.
 inline constexpr std::uint32_t max_packing = 4;
-static_assert(packed_snow_density == max_packing * fresh_snow_density);
 
 /// The most levels compaction may take off `units` of snow: packed to
-/// packed_snow_density they still stand ceil(units / max_packing) levels.
+/// max_packing times fresh density they still stand ceil(units / max_packing) levels.
 [[nodiscard]] constexpr std::uint32_t max_compaction(std::uint32_t units) {
     return units - (units / max_packing + (units % max_packing != 0 ? 1 : 0));
 }
@@ -80,17 +80,22 @@ inline constexpr std::uint8_t closed_all = 0xF;
 struct SnowSurface {
     float x0 = 0.0f, z0 = 0.0f, cell = 0.05f;
     std::uint32_t nx = 0, nz = 0;
-    float unit_height = 0.0f;        ///< metres of snow one unit adds to a cell
+    /// Metres one unit of fresh snow adds to a cell: a level is the volume
+    /// of one unit at the run's fresh density, so (snow, depth_levels) is a
+    /// cell's exact mass and volume and its density is their ratio.
+    float unit_height = 0.0f;
     Vector<std::int64_t> base_level; ///< bare top per cell, in unit_height steps
     /// Every base_level is the same (a level rectangle), so levels differ by
     /// their snow alone; false: they may differ (a slope, a cover's base).
     bool uniform_base = false;
     Vector<std::uint32_t> snow; ///< settled units per cell (row-major, x fastest)
-    /// Per cell, the levels by which packed snow stands lower than its units
-    /// would at fresh density (docs/cover_and_bodies.md "Compaction"): its
-    /// mean density is fresh_snow_density · snow / depth_levels. Empty until a
-    /// body first compacts snow here. At most max_compaction(snow[i]); snow
-    /// falling on it keeps the packed layer, so the mean relaxes to fresh.
+    /// Per cell, the levels by which packed or settled snow stands lower than
+    /// its units would at fresh density (docs/cover_and_bodies.md
+    /// "Compaction", "Settling"): its mean density is the fresh density ·
+    /// snow / depth_levels. Sized by make_surface (a surface built by hand:
+    /// empty until a body or settling first compacts snow here). At most
+    /// max_compaction(snow[i]); snow falling on it keeps the packed layer, so
+    /// the mean is the exact mix of the two.
     Vector<std::uint32_t> compacted;
     std::uint32_t edge_limit_units = 0;
     std::int64_t laplacian_limit_units = 0; ///< cap on 4h - Σ neighbours, in units
@@ -228,10 +233,13 @@ struct SurfaceOf {
 /// Tag component on a solid (collider entity) that owns at least one surface.
 struct SnowHolder {};
 
-/// Builds a surface from a definition; throws SimulationError naming the bad
-/// field for invalid values. Its grid has at most
-/// max_surface_cells_per_side cells per side (limits.hpp).
-[[nodiscard]] SnowSurface make_surface(const SurfaceDef& def);
+/// Builds a surface from a definition for snow that lands at `fresh_density`
+/// (kg/m³, fresh_snow_density of the run's air temperature); throws
+/// SimulationError naming the bad field for invalid values. Its grid has at
+/// most max_surface_cells_per_side cells per side (limits.hpp).
+[[nodiscard]] SnowSurface
+make_surface(const SurfaceDef& def,
+             double fresh_density = fresh_snow_density(SimConfig{}.air_temperature));
 
 /// Corners of a surface's bare top as the plane through its corner cells (what
 /// the occlusion map rasterises): (x0,z0), (x1,z0), (x1,z1), (x0,z1).

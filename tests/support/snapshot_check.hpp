@@ -19,6 +19,7 @@ namespace snow::test {
 struct RunEnd {
     FlakePool flakes;
     std::vector<Vector<std::uint32_t>> snow;       ///< per surface, pool order
+    std::vector<Vector<std::uint32_t>> packed;     ///< per surface: its compaction (density)
     std::vector<Vector<std::int64_t>> base;        ///< per surface, pool order
     std::vector<Vector<std::uint32_t>> edge_cells; ///< per cover, pool order
     std::vector<Body> bodies;                      ///< pool order
@@ -27,9 +28,11 @@ struct RunEnd {
 };
 
 inline RunEnd run_end(const Simulation& sim) {
-    RunEnd r{flake_pool(sim), {}, {}, {}, {}, world_of(sim).resource<MassLedger>(), sim.counters()};
+    RunEnd r{flake_pool(sim), {}, {}, {}, {}, {}, world_of(sim).resource<MassLedger>(),
+             sim.counters()};
     world_of(sim).each<SnowSurface>([&](Entity, const SnowSurface& s) {
         r.snow.push_back(s.snow);
+        r.packed.push_back(s.compacted);
         r.base.push_back(s.base_level);
     });
     world_of(sim).each<SnowCover>(
@@ -56,8 +59,8 @@ inline ::testing::AssertionResult same_end(const RunEnd& a, const RunEnd& b) {
         f.slot_end != g.slot_end) {
         return ::testing::AssertionFailure() << "flake pools differ";
     }
-    if (a.snow != b.snow) {
-        return ::testing::AssertionFailure() << "surface snow differs";
+    if (a.snow != b.snow || a.packed != b.packed) {
+        return ::testing::AssertionFailure() << "surface snow or its density differs";
     }
     if (a.base != b.base || a.edge_cells != b.edge_cells) {
         return ::testing::AssertionFailure() << "cover bases differ";

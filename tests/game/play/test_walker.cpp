@@ -22,9 +22,11 @@ namespace snow {
 namespace {
 
 constexpr float cell = 0.1f;
-constexpr std::uint32_t depth_units = 4000; // 2 cm of snow on 10 cm cells
+/// 4000 units on 10 cm cells: 2.7 cm of snow at the default air temperature's
+/// fresh density (75 kg/m³ at −5 °C [HP98]; SnowyYard::fresh_depth).
+constexpr std::uint32_t depth_units = 4000;
 
-/// A 10 m ground surface with 2 cm of snow and a 1 m high box (a wall) at x > 2.
+/// A 10 m ground surface with 2.7 cm of snow and a 1 m high box (a wall) at x > 2.
 struct SnowyYard {
     Simulation sim;
     SurfaceId ground;
@@ -53,6 +55,10 @@ struct SnowyYard {
         c.bounds = {{-6.0f, -1.0f, -6.0f}, {6.0f, 4.0f, 6.0f}};
         c.max_flakes = 1000;
         return c;
+    }
+    /// The untouched snow's depth (m): depth_units at the ground's unit height.
+    [[nodiscard]] double fresh_depth() const {
+        return depth_units * double{snow_surface(sim, ground).unit_height};
     }
     float depth(float x, float z) const {
         const auto c = snow_column(world_of(sim), x, z);
@@ -86,7 +92,7 @@ TEST(Walker, WalksThroughTheFacadeAndLeavesATrench) {
         // As wide as the capsule: cleared to within a cell of its 0.25 m radius.
         EXPECT_LT(y.depth(x, 0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
         EXPECT_LT(y.depth(x, -0.15f), 0.25f * y.depth(x, 1.0f)) << "trench side at x " << x;
-        EXPECT_NEAR(y.depth(x, 1.0f), 0.02f, 0.002f) << "untouched 1 m beside it";
+        EXPECT_NEAR(y.depth(x, 1.0f), y.fresh_depth(), 0.002) << "untouched 1 m beside it";
     }
     const TrailReport t = w.trail(y.sim);
     EXPECT_NEAR(t.walked, 3.5f, 0.05f);
@@ -211,7 +217,7 @@ TEST(SnowReadout, ColumnIsTheHighestBareTopAndItsSnow) {
     const auto ground = snow_column(world_of(y.sim), 0.0f, 0.0f);
     ASSERT_TRUE(ground);
     EXPECT_FLOAT_EQ(ground->base, 0.0f);
-    EXPECT_NEAR(ground->depth, 0.02f, 1.0e-6f);
+    EXPECT_NEAR(ground->depth, y.fresh_depth(), 1.0e-6);
     const auto wall = snow_column(world_of(y.sim), 2.5f, 0.0f);
     ASSERT_TRUE(wall);
     EXPECT_NEAR(wall->base, 1.0f, 1.0e-4f); // the wall's top, above the ground's cell
@@ -219,7 +225,7 @@ TEST(SnowReadout, ColumnIsTheHighestBareTopAndItsSnow) {
     const SnowSurface* g = ground_surface(world_of(y.sim));
     ASSERT_NE(g, nullptr);
     EXPECT_EQ(g->nx, 100u); // the ground, not the wall's top
-    EXPECT_NEAR(mean_depth(*g), 0.02, 1.0e-9);
+    EXPECT_NEAR(mean_depth(*g), y.fresh_depth(), 1.0e-9);
 }
 
 TEST(TimeScale, CyclesAndStopsGrowingPastTheFrameBudget) {

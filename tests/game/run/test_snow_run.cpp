@@ -41,7 +41,7 @@ TEST(SnowRunCli, JsonReportHasEveryField) {
     }
     EXPECT_EQ(names, (std::vector<std::string>{"cover", "bodies", "order", "spawn", "wind",
                                                "wind_field", "flakes", "carve", "wind_transport",
-                                               "redistribute", "spill", "occlusion"}));
+                                               "settle", "redistribute", "spill", "occlusion"}));
 }
 
 TEST(SnowRunCli, SameHashForOneAndTwoThreads) {

@@ -48,10 +48,12 @@ TEST(Determinism, PinnedHashHoldsInEveryBuild) {
     // here, so CI's Debug (ASan, scalar, SNOW_NATIVE off) and Release (-O3,
     // vectorised, -march=native) builds must agree with each other and with
     // the run that pinned it. Re-pin only with a reason in the commit message.
-    // (Last re-pinned when flakes got sizes (issue #30): each parcel's size,
-    // mass and fall speed follow the size spectrum and [LH74], and roofs
-    // slide by pitch; before, 0x9cbe11bf6725c2f2.)
-    constexpr std::uint64_t pinned = 0x745319f79cc88d3eull;
+    // (Last re-pinned when snow got its density (issue #30 item 2): a level
+    // is one unit at the fresh density of the air temperature [HP98], so
+    // every unit height changed, and every surface keeps its compaction from
+    // the start for settling [And76]; before, 0x745319f79cc88d3e, and before
+    // flakes got sizes, 0x9cbe11bf6725c2f2.)
+    constexpr std::uint64_t pinned = 0x69aca2a5e7de0ffbull;
     for (const unsigned threads : {1u, 2u}) {
         auto sim = busy(threads);
         sim->run(300);

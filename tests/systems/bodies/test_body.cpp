@@ -3,6 +3,8 @@
 // determinism and restore with bodies; bad input rejected.
 #include "systems/api/simulation_internals.hpp"
 #include "systems/api/validation.hpp"
+#include "systems/core/sim_config.hpp"
+#include "systems/core/units.hpp"
 #include "tests/support/even_snow.hpp"
 #include "tests/support/share_work.hpp"
 
@@ -17,7 +19,10 @@ namespace snow {
 namespace {
 
 constexpr float cell = 0.05f;
-constexpr std::uint32_t depth_units = 5000; // 10 cm of snow on 5 cm cells
+/// 10 cm of snow on 5 cm cells: the units that stand 10 cm at the default
+/// air temperature's fresh density (75 kg/m³ at −5 °C [HP98]).
+const std::uint32_t depth_units = static_cast<std::uint32_t>(
+    std::lround(0.1 * fresh_snow_density(SimConfig{}.air_temperature) * cell * cell / unit_kg));
 
 SimConfig world_config(unsigned threads = 1) {
     SimConfig c;

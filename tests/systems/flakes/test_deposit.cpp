@@ -115,10 +115,11 @@ TEST(SnowSurfaceDef, LevelsAndLimitsInUnits) {
     const SnowSurface s = make_surface(d);
     EXPECT_EQ(s.nx, 10u);
     EXPECT_EQ(s.nz, 10u);
-    const double uh = unit_kg / (fresh_snow_density * 0.1 * 0.1); // 5e-6 m per unit
+    // 6.6e-6 m per unit at the default -5 °C's fresh density (75 kg/m³).
+    const double uh = unit_kg / (fresh_snow_density(SimConfig{}.air_temperature) * 0.1 * 0.1);
     EXPECT_FLOAT_EQ(s.unit_height, static_cast<float>(uh));
     EXPECT_EQ(s.base_level[s.index(3, 7)], std::llround((0.5 + 0.2 * 0.35) / uh));
-    EXPECT_EQ(s.edge_limit_units, 10000u);
+    EXPECT_EQ(s.edge_limit_units, static_cast<std::uint32_t>(std::llround(double{0.05f} / uh)));
     EXPECT_EQ(s.laplacian_limit_units, std::llround(20.0 * 0.01 / uh));
     std::uint32_t ix = 0, iz = 0;
     EXPECT_TRUE(s.cell_at(-0.95f, 2.99f, ix, iz));

@@ -4,6 +4,7 @@
 // exactly. What a roof keeps then falls with its pitch as EN 1991's roof
 // shape coefficient does ([EN1991] in docs/references.md).
 #include "systems/api/simulation_internals.hpp"
+#include "systems/core/units.hpp"
 #include "tests/scenes/roof_load.hpp"
 #include "tests/support/rect_surface.hpp"
 
@@ -17,8 +18,9 @@ namespace snow {
 namespace {
 
 /// A slippery roof from x = -1 (high) to 1 (low, slope −0.5) over z in
-/// [−1, 1], 10 cm cells, sliding from a 2 kg/m² mean load (2 cm of fresh
-/// snow); a flat porch below its low eave and the ground under everything.
+/// [−1, 1], 10 cm cells, sliding from a 2 kg/m² mean load (2.7 cm of fresh
+/// snow at the default −5 °C); a flat porch below its low eave and the
+/// ground under everything.
 struct SlidingRoof {
     Simulation sim;
     SurfaceId ground, roof, porch;
@@ -48,10 +50,12 @@ struct SlidingRoof {
         return w;
     }
     [[nodiscard]] const SnowSurface& s(SurfaceId e) const { return snow_surface(sim, e); }
-    /// Units giving the roof's line iz a mean depth of `depth` m, spread evenly.
-    void fill_line(std::uint32_t iz, float depth) {
+    /// Units giving the roof's line iz a mean load of `kg_m2` (kg/m² of
+    /// plan), spread evenly.
+    void fill_line(std::uint32_t iz, double kg_m2) {
         const SnowSurface& r = s(roof);
-        const auto units = static_cast<std::uint32_t>(depth / r.unit_height);
+        const double cell_m2 = double{r.cell} * r.cell;
+        const auto units = static_cast<std::uint32_t>(std::llround(kg_m2 * cell_m2 / unit_kg));
         for (std::uint32_t ix = 0; ix < r.nx; ++ix) {
             sim.add_settled_snow(roof, ix, iz, units);
         }
@@ -68,8 +72,8 @@ struct SlidingRoof {
 
 TEST(Slide, ALineOverTheSlideDepthShedsWholeOntoWhatLiesBelowItsEave) {
     SlidingRoof y;
-    y.fill_line(5, 0.025f);  // over 2 cm: slides
-    y.fill_line(12, 0.015f); // under: stays
+    y.fill_line(5, 2.5);  // over 2 kg/m²: slides
+    y.fill_line(12, 1.5); // under: stays
     const std::uint64_t slab = y.line_units(5), kept = y.line_units(12);
     for (int t = 0; t < 300; ++t) {
         y.sim.tick();
@@ -99,7 +103,7 @@ TEST(Slide, TheWindHardlyCarriesTheSlabOffThePorch) {
     Wind wind = SlidingRoof::no_wind();
     wind.base = wind.current = glm::vec3{0.0f, 0.0f, -2.5f};
     SlidingRoof y(wind);
-    y.fill_line(5, 0.03f); // at z = -0.45, 0.55 m from the porch's end downwind
+    y.fill_line(5, 3.0); // at z = -0.45, 0.55 m from the porch's end downwind
     const std::uint64_t slab = y.line_units(5);
     y.sim.run(300);
     ASSERT_TRUE(y.sim.mass().balanced());
@@ -110,7 +114,7 @@ TEST(Slide, TheWindHardlyCarriesTheSlabOffThePorch) {
 TEST(Slide, SaveAndRestoreAcrossASlideGiveTheSameState) {
     SlidingRoof a, b;
     for (SlidingRoof* y : {&a, &b}) {
-        y->fill_line(3, 0.03f);
+        y->fill_line(3, 3.0);
         y->sim.run(2); // mid-fall
     }
     const auto snap = save_snapshot(b.sim);

@@ -154,10 +154,11 @@ TEST(WindField, PinnedHashHoldsInEveryBuild) {
     // As Determinism.PinnedHashHoldsInEveryBuild, with the field: scalar
     // Debug and vectorised Release builds must compute it bit for bit alike.
     // Re-pin only with a reason in the commit message. (Last re-pinned when
-    // the field got a ground (issue #30): the yard's ground surface, 0.5 m
-    // above the bounds floor, fills the cells under it; before,
-    // 0xffacd11b2220e030, and before flakes got sizes 0x349e9dc4577a1117.)
-    constexpr std::uint64_t pinned = 0xfb44c3b44516180eull;
+    // snow got its density (issue #30 item 2): unit heights follow the air
+    // temperature's fresh density [HP98] and surfaces settle [And76]; before,
+    // 0xfb44c3b44516180e (when the field got a ground), 0xffacd11b2220e030,
+    // and before flakes got sizes, 0x349e9dc4577a1117.)
+    constexpr std::uint64_t pinned = 0x1fb540994598028dull;
     auto sim = make_yard();
     sim->set_wind_field(WindFieldDef{});
     sim->run(200);
