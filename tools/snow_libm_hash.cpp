@@ -114,6 +114,17 @@ int main(int argc, char**) {
         }
         print("spawn", d);
     }
+    // settle (systems/snowpack/settle_system.cpp): Anderson's rates, e^x of
+    // temperature and density terms, and a cell's shrink, expm1(−rate·dt).
+    {
+        Digest d;
+        Draws r{6};
+        for (std::uint32_t i = 0; i < pairs; ++i) {
+            d.add(std::exp(r.uniform(-60.0, 60.0)));
+            d.add(std::expm1(-r.uniform(0.0, 1.0)));
+        }
+        print("settle", d);
+    }
     // integrate (exponential rule): e^(−c·dt), c·dt >= 0, down to 0.
     print("expf", every_float(0.0f, 104.0f, 61, [](Digest& d, float x) { d.add(std::exp(-x)); }));
     // wind_system: a gust's sin(π·phase), phase in [0, 1]; the scene loader's
