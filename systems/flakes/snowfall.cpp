@@ -64,11 +64,15 @@ SpectrumMeans spectrum_means(const Emitter& e) {
 }
 
 double parcel_multiplicity(const Emitter& e, double ground_area) {
+    return parcel_multiplicity(e, ground_area, spectrum_means(e));
+}
+
+double parcel_multiplicity(const Emitter& e, double ground_area, const SpectrumMeans& means) {
     if (e.rate <= 0.0f) {
         return 0.0;
     }
     const double kg_per_s = static_cast<double>(e.snowfall_kg_m2_h) * ground_area / 3600.0;
-    return kg_per_s / (static_cast<double>(e.rate) * spectrum_means(e).mass_mg * 1.0e-6);
+    return kg_per_s / (static_cast<double>(e.rate) * means.mass_mg * 1.0e-6);
 }
 
 double min_parcel_rate(const Emitter& e, double ground_area) {

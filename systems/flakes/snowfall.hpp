@@ -27,6 +27,9 @@ struct SpectrumMeans {
 /// Real flakes per parcel: the declared snowfall over `ground_area` m²,
 /// shared among `rate` parcels a second (0 when the emitter makes none).
 [[nodiscard]] double parcel_multiplicity(const Emitter& e, double ground_area);
+/// The same with the spectrum's means already at hand (spawn needs both).
+[[nodiscard]] double parcel_multiplicity(const Emitter& e, double ground_area,
+                                         const SpectrumMeans& means);
 
 /// The fewest parcels a second that carry the snowfall over `ground_area` m²
 /// with no parcel (the largest size's) above max_flake_units.

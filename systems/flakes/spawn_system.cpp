@@ -107,7 +107,7 @@ void spawn_system(World& w) {
         auto n = static_cast<std::uint64_t>(expected + rng_uniform(count_key));
         const SpectrumMeans means = spectrum_means(em);
         const FaceWeights faces = face_weights(region, air, static_cast<float>(means.fall_speed));
-        const double multiplicity = parcel_multiplicity(em, ground_area);
+        const double multiplicity = parcel_multiplicity(em, ground_area, means);
         for (; n > 0; --n) {
             std::uint32_t slot = 0;
             if (!pool.acquire(slot)) {
