@@ -18,6 +18,10 @@ function(snow_set_options target)
                                                  -fno-sanitize-recover=all)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
+    if(SNOW_FUZZ) # coverage for libFuzzer; fuzz/ links the fuzzer's main
+        target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link
+            -fsanitize-coverage-ignorelist=${PROJECT_SOURCE_DIR}/fuzz/coverage_ignore.txt)
+    endif()
 endfunction()
 
 # The default allocator (ecs/host_memory.cpp) calls the sized aligned

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <string>
 
@@ -124,16 +123,20 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
     return true;
 }
 
-bool read_shared(ArgReader& args, const Usage& usage, const SceneArgs& into) {
+void print_usage(const Usage& usage) {
+    std::fputs(usage.head, stdout);
+    std::fputs(override_usage, stdout);
+    std::fputs(usage.tail, stdout);
+}
+
+bool read_shared(ArgReader& args, const SceneArgs& into) {
     const std::string_view f = args.flag();
     if (read_override(args, into.overrides)) {
         return true;
     }
     if (f == "--help" || f == "-h") {
-        std::fputs(usage.head, stdout);
-        std::fputs(override_usage, stdout);
-        std::fputs(usage.tail, stdout);
-        std::exit(0);
+        into.help = true;
+        return true;
     }
     if (f == "--scene") {
         into.scene = std::string(args.value());

@@ -70,26 +70,31 @@ struct Usage {
     const char* tail;
 };
 
-/// What both apps read alike: the scene file and the overrides.
+/// Prints `usage` (its head, override_usage, its tail) to stdout.
+void print_usage(const Usage& usage);
+
+/// What both apps read alike: the scene file, the overrides and whether
+/// --help was asked for (the app then prints its usage and exits 0).
 struct SceneArgs {
     std::optional<std::string>& scene;
     SceneOverrides& overrides;
+    bool& help;
 };
 
 /// If the current flag is one both apps take (override_usage's, --scene
-/// FILE, --help or -h: prints `usage` and exits 0), reads it into `into` and
-/// returns true; false for any other flag.
-[[nodiscard]] bool read_shared(ArgReader& args, const Usage& usage, const SceneArgs& into);
+/// FILE, --help or -h), reads it into `into` and returns true; false for any
+/// other flag.
+[[nodiscard]] bool read_shared(ArgReader& args, const SceneArgs& into);
 
-/// Reads the whole command line: the flags both apps take into `into`, every
-/// other flag by `own(flag, args)`, which returns false for one it does not
-/// know (a UsageError naming it).
+/// Reads the whole command line, up to a --help: the flags both apps take
+/// into `into`, every other flag by `own(flag, args)`, which returns false
+/// for one it does not know (a UsageError naming it). Never exits, so the
+/// parsers can be fuzzed (fuzz/fuzz_cli.cpp).
 template <typename Own>
-void read_command_line(int argc, char** argv, const Usage& usage, const SceneArgs& into,
-                       Own&& own) {
+void read_command_line(int argc, char** argv, const SceneArgs& into, Own&& own) {
     ArgReader args(argc, argv);
-    while (args.next()) {
-        if (!read_shared(args, usage, into) && !own(args.flag(), args)) {
+    while (!into.help && args.next()) {
+        if (!read_shared(args, into) && !own(args.flag(), args)) {
             args.unknown();
         }
     }

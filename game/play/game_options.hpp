@@ -1,9 +1,10 @@
 /// @file game_options.hpp
-/// @brief What a snow_game run is asked to do (its command line, parsed by
-/// snow_game.cpp): the scene and how the session starts, and where and how
-/// the frames go.
+/// @brief What a snow_game run is asked to do (its command line, parsed
+/// strictly): the scene and how the session starts, and where and how the
+/// frames go.
 #pragma once
 
+#include "game/app/cli_args.hpp"
 #include "game/play/camera_controller.hpp"
 #include "game/play/game_input.hpp"
 
@@ -42,7 +43,14 @@ struct GameOptions {
     std::optional<glm::vec3> look_from;  ///< replaces the scene camera's position
     std::optional<glm::vec3> look_at;    ///< replaces the scene camera's target
     SceneOverrides overrides;
+    bool help = false; ///< --help: print game_usage and exit 0
 };
+
+/// snow_game's usage text.
+extern const cli::Usage game_usage;
+
+/// Reads snow_game's command line; throws cli::UsageError naming a bad flag or value.
+[[nodiscard]] GameOptions parse_game_options(int argc, char** argv);
 
 /// The settings --timelapse stands for (flags after it still override them):
 /// the village's storm, headless, several simulated minutes in 120 frames.

@@ -2,9 +2,9 @@
 // the state hash, the exact mass balance and what each system cost; bakes
 // the settled snow out on request (--export, --export-depth).
 #include "game/app/builtin_scene.hpp"
-#include "game/app/cli_args.hpp"
 #include "game/export/snapshot_file.hpp"
 #include "game/export/snow_export.hpp"
+#include "game/run/run_options.hpp"
 #include "game/run/run_report.hpp"
 #include <snow/scene.hpp>
 
@@ -17,72 +17,9 @@
 
 namespace {
 
-constexpr const char* usage_head = R"(usage: snow_run [options]
-  --scene FILE        glTF scene (default: the built-in village scene)
-  --ticks N           ticks to simulate (default 200)
-)";
-constexpr const char* usage_tail = R"(  --report json|text  what to print at the end (default text)
-  --export FILE.glb   after the run, write the settled snow as glTF 2.0 meshes
-  --export-depth DIR  after the run, write each surface's depth as a 16-bit PNG
-                      (millimetres) and a JSON sidecar into DIR
-  --load-state FILE   before the run, restore a snapshot of the same scene
-                      (written by --save-state); --ticks then runs on from it
-  --save-state FILE   after the run, write the simulation's snapshot (bytes)
-  --help              this text
-Exit status: 0 ok, 2 bad arguments, bad scene, a snapshot that cannot be
-read or an output path that cannot be written, 1 other failure.
-)";
-
-struct Options {
-    std::optional<std::string> scene;
-    std::uint64_t ticks = 200;
-    bool json = false;
-    std::optional<std::string> export_glb;
-    std::optional<std::string> export_depth;
-    std::optional<std::string> load_state;
-    std::optional<std::string> save_state;
-    snow::SceneOverrides overrides;
-};
-
-/// Reads one of snow_run's own flags into `o`; false for a flag it does not take.
-bool read_flag(std::string_view f, snow::cli::ArgReader& args, Options& o) {
-    using namespace snow::cli;
-    if (f == "--ticks") {
-        o.ticks = parse_uint(f, args.value(), 0, 1'000'000'000'000ull);
-    } else if (f == "--report") {
-        const std::string_view r = args.value();
-        if (r != "json" && r != "text") {
-            throw UsageError{"--report: expected json or text, got '" + std::string(r) + "'"};
-        }
-        o.json = r == "json";
-    } else if (f == "--export" || f == "--export-depth" || f == "--load-state" ||
-               f == "--save-state") {
-        const std::string_view path = args.value();
-        if (path.empty()) {
-            throw UsageError{std::string(f) + ": expected a path"};
-        }
-        auto& slot = f == "--export"         ? o.export_glb
-                     : f == "--export-depth" ? o.export_depth
-                     : f == "--load-state"   ? o.load_state
-                                             : o.save_state;
-        slot = std::string(path);
-    } else {
-        return false;
-    }
-    return true;
-}
-
-Options parse(int argc, char** argv) {
-    Options o;
-    snow::cli::read_command_line(
-        argc, argv, {usage_head, usage_tail}, {o.scene, o.overrides},
-        [&](std::string_view f, snow::cli::ArgReader& args) { return read_flag(f, args, o); });
-    return o;
-}
-
 /// Restores --load-state's snapshot into `sim`; prints the error naming the
 /// flag and returns false when it cannot (`sim` is then unchanged).
-bool load_state(const Options& o, snow::Simulation& sim) {
+bool load_state(const snow::RunOptions& o, snow::Simulation& sim) {
     if (!o.load_state) {
         return true;
     }
@@ -97,7 +34,7 @@ bool load_state(const Options& o, snow::Simulation& sim) {
 
 /// Writes the exports asked for; with no `sim`, only checks that their paths
 /// can be written. A failure is printed naming the flag and returns false.
-bool write_exports(const Options& o, const snow::Simulation* sim) {
+bool write_exports(const snow::RunOptions& o, const snow::Simulation* sim) {
     const char* flag = "--export";
     try {
         if (o.export_glb) {
@@ -124,12 +61,16 @@ bool write_exports(const Options& o, const snow::Simulation* sim) {
 } // namespace
 
 int main(int argc, char** argv) {
-    Options opt;
+    snow::RunOptions opt;
     try {
-        opt = parse(argc, argv);
+        opt = snow::parse_run_options(argc, argv);
     } catch (const snow::cli::UsageError& e) {
         std::fprintf(stderr, "snow_run: %s\n", e.message.c_str());
         return 2;
+    }
+    if (opt.help) {
+        snow::cli::print_usage(snow::run_usage);
+        return 0;
     }
     snow::SceneLoadResult scene = opt.scene
                                       ? snow::load_scene_file(*opt.scene, opt.overrides)
