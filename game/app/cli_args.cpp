@@ -2,6 +2,7 @@
 
 #include "systems/core/sim_config.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -105,6 +106,8 @@ bool read_override(ArgReader& args, SceneOverrides& o) {
         o.dt = static_cast<float>(parse_positive(f, args.value(), 1.0));
     } else if (f == "--max-flakes") {
         o.max_flakes = static_cast<std::uint32_t>(parse_uint(f, args.value(), 1, 16u << 20));
+        // Asking for a pool on the command line is the caller's word for it.
+        o.budget.flakes = std::max(o.budget.flakes, std::uint64_t{*o.max_flakes});
     } else if (f == "--integrator") {
         const std::string_view name = args.value();
         const auto i = parse_integrator(name);

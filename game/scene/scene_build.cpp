@@ -5,6 +5,8 @@
 #include "systems/api/simulation_internals.hpp"
 
 #include "game/scene/scene_auto_snow.hpp"
+#include "game/scene/scene_budget.hpp"
+#include "systems/core/limits.hpp"
 
 #include <glm/common.hpp>
 
@@ -25,32 +27,78 @@ auto through_facade(const std::string& prefix, Fn&& fn) {
     }
 }
 
-/// Rejects surfaces whose grid is too fine for their node, before any memory
-/// is spent on them; the facade's own checks handle the remaining values.
-/// `scale` is the cell_scale override already applied to d.cell (1 if none).
-void check_surface_cells(const SurfaceDef& d, const std::string& path, float scale,
-                         std::uint64_t& total) {
+/// `a·b·c` for declared sizes, saturating far past any budget.
+std::uint64_t declared_product(double a, double b, double c = 1.0) {
+    const double p = a * b * c;
+    return p < 1.0e18 ? static_cast<std::uint64_t>(p) : std::uint64_t{1} << 60;
+}
+
+/// Rejects surfaces whose grid is too fine for their node, and adds their
+/// cells to the tally, before any memory is spent on them; the facade's own
+/// checks handle the remaining values. `scale` is the cell_scale override
+/// already applied to d.cell (1 if none).
+void tally_surface(const SurfaceDef& d, const std::string& path, float scale, WorkTally& work) {
+    work.add(surfaces_work, 1, path + ".surface");
     if (!(std::isfinite(d.cell) && d.cell > 0.0f)) {
         return; // the facade names "surface.cell must be > 0"
     }
     const std::string field =
         path + ".surface.cell" +
         (scale == 1.0f ? "" : " (times the cell_scale override " + number_text(scale) + ")");
-    std::uint64_t cells = 1;
-    for (const float size : {d.size_x, d.size_z}) {
-        const double per_side = std::round(static_cast<double>(size) / d.cell);
-        if (per_side > max_surface_cells_per_side) {
-            scene_fail(field, "gives " + number_text(per_side) +
+    double per_side[2];
+    for (int a = 0; a < 2; ++a) {
+        const float size = a == 0 ? d.size_x : d.size_z;
+        per_side[a] = std::max(std::round(static_cast<double>(size) / d.cell), 1.0);
+        if (per_side[a] > max_surface_cells_per_side) {
+            scene_fail(field, "gives " + number_text(per_side[a]) +
                                   " cells per side over the node's " + number_text(size) +
                                   " m wide top (at most " +
                                   std::to_string(max_surface_cells_per_side) + ")");
         }
-        cells *= static_cast<std::uint64_t>(std::max(per_side, 1.0));
     }
-    total += cells;
-    if (total > max_scene_surface_cells) {
-        scene_fail(field, "brings the scene's surfaces to " + std::to_string(total) +
-                              " cells (at most " + std::to_string(max_scene_surface_cells) + ")");
+    work.add(snow_cells_work, declared_product(per_side[0], per_side[1]), field);
+}
+
+/// Adds what the scene-wide settings `s` cost (flakes, cover, wind field, sky
+/// map) to the tally; values past the facade's limits (systems/core/limits.hpp)
+/// or otherwise invalid are left to the facade to name. What `d` does not
+/// declare, auto snow (`auto_field`) made.
+void tally_effects(const SceneSnow& s, const SceneDescription& d, const SimConfig& config,
+                   const SceneOverrides& o, const std::string& auto_field, WorkTally& work) {
+    const std::string declared = d.settings_path + ".";
+    if (config.max_flakes <= max_flakes) {
+        work.add(flakes_work, config.max_flakes,
+                 o.max_flakes ? "max_flakes (command-line override)"
+                              : declared + "simulation.max_flakes");
+    }
+    if (s.cover) {
+        const double cell = static_cast<double>(s.cover->cell) * o.cell_scale.value_or(1.0f);
+        if (std::isfinite(cell) && cell > 0.0) {
+            const double x = std::ceil((double{s.cover->max_x} - s.cover->min_x) / cell);
+            const double z = std::ceil((double{s.cover->max_z} - s.cover->min_z) / cell);
+            if (x > 0.0 && z > 0.0 && x * z <= static_cast<double>(max_cover_cells)) {
+                work.add(snow_cells_work, declared_product(x, z),
+                         d.settings.cover ? declared + "cover.cell" : auto_field);
+            }
+        }
+    }
+    if (s.wind_field) {
+        const WindFieldDef& f = *s.wind_field;
+        const std::uint64_t cells = declared_product(f.cells_x, f.cells_y, f.cells_z);
+        if (cells <= max_wind_field_cells && f.pressure_iterations <= max_pressure_iterations) {
+            work.add(field_cells_work, cells, declared + "wind.field.cells");
+            work.add(field_cell_sweeps_work,
+                     declared_product(static_cast<double>(cells), f.pressure_iterations),
+                     declared + "wind.field.pressure_iterations");
+        }
+    }
+    const std::uint32_t side =
+        o.occlusion_resolution.value_or(s.occlusion ? s.occlusion->resolution : 0);
+    if (side <= max_occlusion_resolution) {
+        work.add(occlusion_texels_work, declared_product(side, side),
+                 o.occlusion_resolution ? "occlusion (command-line override)"
+                 : d.settings.occlusion ? declared + "occlusion.resolution"
+                                        : auto_field);
     }
 }
 
@@ -179,9 +227,10 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     if (o.auto_snow.value_or(!d.auto_snow_path.empty())) {
         add_auto_snow(d.geometry, config, auto_field, roles, s);
     }
-    // Check every surface before anything is allocated.
+    // Check every surface, and the work the scene declares, before anything
+    // is allocated.
+    WorkTally work(o.budget);
     std::vector<std::optional<SurfaceDef>> surfaces(d.geometry.nodes.size());
-    std::uint64_t total_cells = 0;
     for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
         const WorldNode& node = d.geometry.nodes[i];
         const NodeSnow& role = roles[i];
@@ -200,12 +249,21 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if (role.surface) {
             surfaces[i] = surface_over(*role.surface, node.bounds);
             surfaces[i]->cell *= o.cell_scale.value_or(1.0f);
-            check_surface_cells(*surfaces[i], path, o.cell_scale.value_or(1.0f), total_cells);
+            tally_surface(*surfaces[i], path, o.cell_scale.value_or(1.0f), work);
+        }
+        if (is_body(role)) {
+            work.add(bodies_work, 1, path);
+        } else if (role.collider == ColliderKind::mesh) {
+            for (const WorldPrimitive& p : node.primitives) {
+                work.add(collider_triangles_work, p.indices.size() / 3, path + ".collider");
+            }
         }
     }
+    tally_effects(s, d, config, o, auto_field, work);
 
     auto sim = through_facade("simulation settings (after command-line overrides): ",
                               [&] { return std::make_unique<Simulation>(config); });
+    SceneBatch batch(*sim); // one prepare for the whole scene, not one per piece
     for (std::size_t i = 0; i < d.geometry.nodes.size(); ++i) {
         const WorldNode& node = d.geometry.nodes[i];
         const NodeSnow& role = roles[i];
@@ -265,6 +323,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         c.resolution = *o.occlusion_resolution;
         through_facade("occlusion (command-line override): ", [&] { sim->set_occlusion(c); });
     }
+    batch.finish();
     visuals.camera = s.camera.value_or(CameraDef{});
     visuals.environment = s.environment;
     visuals.fog = s.fog; // render-only, validated with the schema

@@ -14,8 +14,6 @@
 
 namespace snow {
 
-/// Most snow cells all surfaces of one scene may have together.
-inline constexpr std::uint64_t max_scene_surface_cells = 1u << 24;
 /// Default simulation bounds: the meshes' bounds grown by this much (m)
 /// sideways and below, and by `default_bounds_headroom` above (room to fall).
 inline constexpr float default_bounds_margin = 1.0f;

@@ -23,6 +23,24 @@
 
 namespace snow {
 
+/// The most work a scene may declare (docs/scenes.md#work-budget). The
+/// loader adds up what a file declares and refuses one past any of these with
+/// one error naming the declaration and the budget, before anything is
+/// allocated. The defaults admit every shipped scene with room to spare and
+/// bound any input's load (docs/reliability.md "Bounded work"); a host that
+/// can afford more raises them.
+struct WorkBudget {
+    std::uint64_t snow_cells = 1u << 21;         ///< the surfaces' and the cover's cells together
+    std::uint64_t surfaces = 1024;               ///< snow surfaces
+    std::uint64_t collider_triangles = 1u << 18; ///< triangles of the mesh colliders
+    std::uint64_t bodies = 64;                   ///< moving bodies
+    std::uint64_t flakes = 1u << 20;             ///< the flake pool (max_flakes)
+    std::uint64_t field_cells = 1u << 17;        ///< the wind field's cells
+    /// Field cells times pressure_iterations: the work of one solver step.
+    std::uint64_t field_cell_sweeps = 1u << 21;
+    std::uint64_t occlusion_texels = 1u << 20; ///< the sky map's resolution squared
+};
+
 /// Values that replace the scene's own `simulation` settings (command line).
 struct SceneOverrides {
     std::optional<std::uint64_t> seed;
@@ -43,6 +61,8 @@ struct SceneOverrides {
     /// Replaces the global wind's mean (m/s); the scene's random walk and
     /// gusts stay (a scene without wind gets the default walk).
     std::optional<glm::vec3> wind;
+    /// The work the scene may declare; the apps raise `flakes` to --max-flakes.
+    WorkBudget budget;
 };
 
 /// Either a ready simulation and its visuals (sim set, error empty) or one

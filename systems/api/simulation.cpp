@@ -165,6 +165,9 @@ void Simulation::Impl::build_schedule() {
 }
 
 void Simulation::Impl::prepare() {
+    if (batched) {
+        return; // SceneBatch::finish() prepares once
+    }
     // In tick order: later ones read what earlier ones built (the collider grid).
     prepare_cover(world);
     prepare_flake_order(world);
@@ -174,6 +177,19 @@ void Simulation::Impl::prepare() {
     prepare_wind_transport(world);
     prepare_redistribute(world);
     prepare_occlusion(world);
+}
+
+SceneBatch::SceneBatch(Simulation& sim) : impl_(InternalAccess::impl(sim)) {
+    impl_.batched = true;
+}
+
+SceneBatch::~SceneBatch() {
+    impl_.batched = false;
+}
+
+void SceneBatch::finish() {
+    impl_.batched = false;
+    impl_.prepare();
 }
 
 EmitterId Simulation::add_emitter(const Emitter& e) {

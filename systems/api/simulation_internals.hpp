@@ -44,11 +44,31 @@ struct Simulation::Impl : HostAllocated {
     void build_schedule();
     /// Readies every system's ticks for the scene as it stands (the
     /// prepare_* of systems.hpp): no tick allocates. Called by each call that
-    /// changes the scene's sources or state.
+    /// changes the scene's sources or state; waits while `batched`.
     void prepare();
+    /// A loader is adding a whole scene (SceneBatch): prepare() runs once at
+    /// its end, not once per piece (each rebuilds every system's derived
+    /// data, so per piece a scene of N pieces costs N²).
+    bool batched = false;
     /// A digest of the settings and the source data (docs/design.md): a
     /// byte snapshot loads only where it matches.
     [[nodiscard]] std::uint64_t scene_fingerprint() const;
+};
+
+/// While it lives, the facade calls that add to `sim` leave prepare() to
+/// finish(): for loaders adding a whole scene. Never ticks in between. If
+/// finish() is not reached (an error), `sim` must be thrown away.
+class SceneBatch {
+  public:
+    explicit SceneBatch(Simulation& sim);
+    ~SceneBatch();
+    SceneBatch(const SceneBatch&) = delete;
+    SceneBatch& operator=(const SceneBatch&) = delete;
+    /// Readies the simulation for its first tick (one prepare()).
+    void finish();
+
+  private:
+    Simulation::Impl& impl_;
 };
 
 struct InternalAccess {

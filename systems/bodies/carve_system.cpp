@@ -23,6 +23,7 @@ namespace {
 struct CarveScratch {
     Vector<std::uint8_t> mask;  ///< 1 footprint, 0 outside
     Vector<std::int64_t> floor; ///< footprint: the level the body reaches down to
+    Vector<float> bottom, top;  ///< the sweep's lowest and highest point over each cell (m)
     Vector<std::uint32_t> ring;
 };
 
@@ -44,25 +45,6 @@ bool cell_window(const SnowSurface& s, const Body& b, CellBox& box) {
     return true;
 }
 
-/// Lowest and highest point (m) of the body over world (x, z) along this
-/// tick's sweep; false when no pose of the sweep covers it.
-bool swept_span(const Body& b, float x, float z, std::uint32_t steps, float& bottom, float& top) {
-    bottom = std::numeric_limits<float>::infinity();
-    top = -bottom;
-    bool hit = false;
-    for (std::uint32_t k = 0; k <= steps; ++k) {
-        const glm::vec3 at =
-            b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
-        float below = 0.0f, above = 0.0f;
-        if (b.extent_at(x - at.x, z - at.z, below, above)) {
-            bottom = std::min(bottom, at.y - below);
-            top = std::max(top, at.y + above);
-            hit = true;
-        }
-    }
-    return hit;
-}
-
 /// The level (unit_height steps) a height falls in, clamped to the grid's range.
 std::int64_t level_of(const SnowSurface& s, float y) {
     const double level = std::floor(static_cast<double>(y) / s.unit_height);
@@ -73,24 +55,60 @@ std::int64_t level_of(const SnowSurface& s, float y) {
 /// level the body's lowest point reaches down to. A cell is in the footprint
 /// only where the body reaches above its bare top: a body under a roof passes
 /// beneath the roof's snow (whether it is below the snow's top is the floor).
+/// Each pose of the sweep visits only the cells under it, so the work is
+/// poses × footprint, not poses × window (a body that jumps far on a fine
+/// grid would otherwise cost the cube of its jump in cells).
 void mark_footprint(const Body& b, const SnowSurface& s, const CellBox& box,
                     CarveScratch& scratch) {
     const std::uint32_t w = box.x1 - box.x0 + 1, h = box.z1 - box.z0 + 1;
-    scratch.mask.assign(static_cast<std::size_t>(w) * h, 0);
-    scratch.floor.assign(scratch.mask.size(), 0);
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    scratch.mask.assign(n, 0);
+    scratch.floor.assign(n, 0);
+    scratch.bottom.assign(n, std::numeric_limits<float>::infinity());
+    scratch.top.assign(n, -std::numeric_limits<float>::infinity());
     const float travel = std::hypot(b.position.x - b.previous.x, b.position.z - b.previous.z);
     const auto steps = static_cast<std::uint32_t>(std::ceil(travel / (0.5f * s.cell))) + 1;
+    const double r = b.reach();
+    // The window's cells (box-relative) within the pose's reach, one cell to spare.
+    const auto span = [&](double centre, float origin, std::uint32_t first, std::uint32_t last,
+                          std::uint32_t& lo, std::uint32_t& hi) {
+        const double c0 = (centre - r - origin) / s.cell - 1.0, c1 = (centre + r - origin) / s.cell;
+        if (!(c1 >= first && c0 <= last)) {
+            return false;
+        }
+        lo = static_cast<std::uint32_t>(std::max(c0, static_cast<double>(first))) - first;
+        hi = static_cast<std::uint32_t>(std::min(c1, static_cast<double>(last))) - first;
+        return true;
+    };
+    for (std::uint32_t k = 0; k <= steps; ++k) {
+        const glm::vec3 at =
+            b.previous + (b.position - b.previous) * (static_cast<float>(k) / steps);
+        std::uint32_t i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+        if (!span(at.x, s.x0, box.x0, box.x1, i0, i1) ||
+            !span(at.z, s.z0, box.z0, box.z1, j0, j1)) {
+            continue;
+        }
+        for (std::uint32_t j = j0; j <= j1; ++j) {
+            for (std::uint32_t i = i0; i <= i1; ++i) {
+                const float x = s.x0 + (static_cast<float>(box.x0 + i) + 0.5f) * s.cell;
+                const float z = s.z0 + (static_cast<float>(box.z0 + j) + 0.5f) * s.cell;
+                float below = 0.0f, above = 0.0f;
+                if (b.extent_at(x - at.x, z - at.z, below, above)) {
+                    const std::size_t c = static_cast<std::size_t>(j) * w + i;
+                    scratch.bottom[c] = std::min(scratch.bottom[c], at.y - below);
+                    scratch.top[c] = std::max(scratch.top[c], at.y + above);
+                }
+            }
+        }
+    }
     for (std::uint32_t j = 0; j < h; ++j) {
         for (std::uint32_t i = 0; i < w; ++i) {
-            const float x = s.x0 + (static_cast<float>(box.x0 + i) + 0.5f) * s.cell;
-            const float z = s.z0 + (static_cast<float>(box.z0 + j) + 0.5f) * s.cell;
+            const std::size_t k = static_cast<std::size_t>(j) * w + i;
             const std::size_t c = s.index(box.x0 + i, box.z0 + j);
-            float bottom = 0.0f, top = 0.0f;
-            if (swept_span(b, x, z, steps, bottom, top) && !s.is_void(c) &&
-                level_of(s, top) > s.base_level[c]) {
-                const std::size_t k = static_cast<std::size_t>(j) * w + i;
+            if (scratch.top[k] > -std::numeric_limits<float>::infinity() && !s.is_void(c) &&
+                level_of(s, scratch.top[k]) > s.base_level[c]) {
                 scratch.mask[k] = 1;
-                scratch.floor[k] = level_of(s, bottom);
+                scratch.floor[k] = level_of(s, scratch.bottom[k]);
             }
         }
     }
@@ -210,6 +228,8 @@ void prepare_carve(World& w) {
     }
     scratch->mask.reserve(largest);
     scratch->floor.reserve(largest);
+    scratch->bottom.reserve(largest);
+    scratch->top.reserve(largest);
     scratch->ring.reserve(largest);
 }
 

@@ -1,10 +1,12 @@
 #include "systems/flakes/emitter.hpp"
 
+#include "ecs/error.hpp"
 #include "ecs/state_hash.hpp"
 #include "systems/core/units.hpp"
 #include "systems/flakes/snowfall.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace snow {
 
@@ -18,6 +20,16 @@ Invalid validate(const Emitter& m) {
     return e;
 }
 
+namespace {
+
+/// A whole parcel rate as the error prints it: every digit while the
+/// integer holds it, else 6 significant ones.
+std::string parcels_text(double rate) {
+    return rate < 1.0e15 ? std::to_string(static_cast<long long>(rate)) : number_text(rate);
+}
+
+} // namespace
+
 Invalid validate(const Emitter& m, const Aabb& bounds) {
     Invalid e = validate(m);
     if (!e.empty()) {
@@ -29,7 +41,7 @@ Invalid validate(const Emitter& m, const Aabb& bounds) {
     // it): the tolerance only absorbs the last bit of the quotient.
     if (m.rate > 0.0f && m.rate < needed * (1.0 - 1e-9)) {
         check::fail(e, "emitter.rate",
-                    ">= " + std::to_string(static_cast<long long>(std::ceil(needed))) +
+                    ">= " + parcels_text(std::ceil(needed)) +
                         " parcels/s for this snowfall over the bounds (each parcel holds at most " +
                         std::to_string(max_flake_units) + " mass units)",
                     m.rate);
