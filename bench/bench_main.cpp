@@ -23,7 +23,9 @@ constexpr const char* smoke_filter = "--benchmark_filter="
                                      "|/cells:256/view:0/changed:0(/|$)"
                                      "|/bodies:1$"
                                      "|^BM_SpeedOfLight/flakes:100000/threads:1/"
-                                     "|^BM_VillageTick/threads:1/";
+                                     "|^BM_VillageTick/threads:1/"
+                                     "|^BM_SceneLoad/scene:0/"
+                                     "|^BM_SceneRefuse/";
 
 } // namespace
 

@@ -5,11 +5,19 @@
   fuzz/corpus/gltf/at_fuzz_budget.gltf    every fuzz::budget() limit reached
 Flakes fill the pool on the first tick; bodies jump from their node to their
 path; mesh colliders instance one grid mesh. Made from assets/scenes/minimal.gltf.
-Usage: fuzz/make_budget_scenes.py (from the repository root)."""
+With --large DIR, also the largest inputs the loader takes, not committed:
+  DIR/largest.gltf  the default-budget scene with about 2^20 JSON values and a
+                    data URI buffer: just under 16 MiB of JSON
+  DIR/largest.glb   the default-budget scene with a render mesh of nearly
+                    2^22 vertices and 2^24 indices in its BIN chunk
+Usage: fuzz/make_budget_scenes.py [--large DIR] (from the repository root)."""
+import array
+import os
 import base64
 import copy
 import json
 import struct
+import sys
 
 BASE = json.load(open("assets/scenes/minimal.gltf"))
 
@@ -77,3 +85,39 @@ scene("assets/testdata/at_default_budget.gltf", "at the default work budget", 0.
       1 << 18, 1 << 20, [64, 32, 64], 1 << 21, 1024)
 scene("fuzz/corpus/gltf/at_fuzz_budget.gltf", "at the fuzz work budget", 0.04, 64, 8,
       1 << 14, 1 << 15, [32, 16, 32], 1 << 17, 256)
+
+if len(sys.argv) == 3 and sys.argv[1] == "--large":
+    out = sys.argv[2]
+    os.makedirs(out, exist_ok=True)
+    doc = json.load(open("assets/testdata/at_default_budget.gltf"))
+    big = copy.deepcopy(doc)
+    big["asset"]["extras"] = {"pad": [0.123456] * (1000000 - 60000)}
+    pad = bytes(5 << 20)
+    big["buffers"].append({"byteLength": len(pad), "uri": "data:application/octet-stream;base64,"
+                           + base64.b64encode(pad).decode()})
+    json.dump(big, open(os.path.join(out, "largest.gltf"), "w"), separators=(",", ":"))
+    raw = bytearray(base64.b64decode(doc["buffers"][0].pop("uri").split(",", 1)[1]))
+    raw += bytes(-len(raw) % 4)
+    nv, ni = (1 << 22) - 100000, (1 << 24) - 300000
+    verts = array.array("f", [0.0]) * (nv * 3)
+    for i in range(0, nv * 3, 3):
+        verts[i], verts[i + 2] = (i % 1000) * 0.001, (i // 1000 % 1000) * 0.001
+    idx = array.array("I", (i % nv for i in range(ni)))
+    off = len(raw)
+    raw += verts.tobytes() + idx.tobytes()
+    doc["buffers"][0]["byteLength"] = len(raw)
+    views = doc["bufferViews"]
+    views += [{"buffer": 0, "byteOffset": off, "byteLength": nv * 12},
+              {"buffer": 0, "byteOffset": off + nv * 12, "byteLength": ni * 4}]
+    acc = doc["accessors"]
+    acc += [{"bufferView": len(views) - 2, "componentType": 5126, "count": nv, "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 0, 1]},
+            {"bufferView": len(views) - 1, "componentType": 5125, "count": ni, "type": "SCALAR"}]
+    doc["meshes"].append({"primitives": [{"attributes": {"POSITION": len(acc) - 2}, "indices": len(acc) - 1}]})
+    doc["nodes"].append({"mesh": len(doc["meshes"]) - 1})
+    doc["scenes"][0]["nodes"].append(len(doc["nodes"]) - 1)
+    text = json.dumps(doc, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(raw), b"BIN\0") + bytes(raw)
+    with open(os.path.join(out, "largest.glb"), "wb") as f:
+        f.write(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)

@@ -8,6 +8,7 @@ set -euo pipefail
 packages=(
     g++ cmake ninja-build pkg-config python3
     clang                                        # CI's second compiler (its ASan+UBSan build, build-asan)
+    libclang-rt-14-dev                           # the sanitizers' and libFuzzer's runtimes (scripts/fuzz.sh)
     libglm-dev                                   # snow_sim (the only dependency of the simulation)
     libglfw3-dev libosmesa6-dev libegl-dev libegl-mesa0 libstb-dev python3-glad libimgui-dev  # snow_render, snow_game
     nlohmann-json3-dev                           # snow_scene

@@ -7,6 +7,7 @@
 #include <snow/scene.hpp>
 
 #include <algorithm>
+#include <cstdint>
 
 namespace snow {
 
@@ -15,10 +16,22 @@ namespace {
 /// Deepest array/object nesting accepted, checked before parsing. Scenes need
 /// under 10; the cap keeps hostile nesting from costing memory and time.
 constexpr int max_json_depth = 64;
+/// Most JSON values accepted, checked before parsing: the parsed document
+/// costs time and memory per value (docs/reliability.md "Bounded work").
+/// The shipped scenes have a few thousand; a buffer in a data URI is one.
+constexpr std::uint64_t max_json_values = 1u << 20;
 
-/// Deepest nesting of [ and { outside strings (a scan, no recursion).
-int json_depth(std::string_view text) {
-    int depth = 0, deepest = 0;
+/// How deep a JSON text nests and about how many values it holds (an upper
+/// bound: each value but the first follows a ',' or opens an array or object).
+struct JsonShape {
+    int depth = 0;
+    std::uint64_t values = 1;
+};
+
+/// The shape of the JSON outside its strings (a scan, no recursion).
+JsonShape json_shape(std::string_view text) {
+    JsonShape shape;
+    int depth = 0;
     bool in_string = false, escaped = false;
     for (const char c : text) {
         if (in_string) {
@@ -32,12 +45,15 @@ int json_depth(std::string_view text) {
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
-            deepest = std::max(deepest, ++depth);
+            shape.depth = std::max(shape.depth, ++depth);
+            ++shape.values;
         } else if (c == ']' || c == '}') {
             --depth;
+        } else if (c == ',') {
+            ++shape.values;
         }
     }
-    return deepest;
+    return shape;
 }
 
 Json parse_json(std::string_view text) {
@@ -68,8 +84,13 @@ ParsedScene parse_scene(std::string_view bytes, const std::string& folder, bool 
                          " bytes of JSON; scenes may have at most " +
                          std::to_string(max_scene_bytes));
     }
-    if (json_depth(source.json) > max_json_depth) {
+    const JsonShape shape = json_shape(source.json);
+    if (shape.depth > max_json_depth) {
         throw SceneError("JSON nests deeper than " + std::to_string(max_json_depth) + " levels");
+    }
+    if (shape.values > max_json_values) {
+        throw SceneError("JSON holds about " + std::to_string(shape.values) +
+                         " values; scenes may have at most " + std::to_string(max_json_values));
     }
     const Json doc = parse_json(source.json);
     ParsedScene parsed;

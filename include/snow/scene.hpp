@@ -78,7 +78,7 @@ struct SceneLoadResult {
 };
 
 /// Largest glTF JSON accepted (a .gltf file, or a .glb's JSON chunk; bytes).
-inline constexpr std::size_t max_scene_bytes = 64u << 20;
+inline constexpr std::size_t max_scene_bytes = 16u << 20;
 /// Largest total size of the buffers of one scene (bytes): external files,
 /// data URIs and a .glb's BIN chunk.
 inline constexpr std::size_t max_scene_buffer_bytes = 256u << 20;
