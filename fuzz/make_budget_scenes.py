@@ -84,7 +84,7 @@ def scene(path, name, cell, surfaces, bodies, triangles, flakes, field, sweeps, 
 scene("assets/testdata/at_default_budget.gltf", "at the default work budget", 0.0101, 1024, 64,
       1 << 18, 1 << 20, [64, 32, 64], 1 << 21, 1024)
 scene("fuzz/corpus/gltf/at_fuzz_budget.gltf", "at the fuzz work budget", 0.04, 64, 8,
-      1 << 14, 1 << 15, [32, 16, 32], 1 << 17, 256)
+      1 << 14, 1 << 16, [32, 16, 32], 1 << 17, 256)
 
 if len(sys.argv) == 3 and sys.argv[1] == "--large":
     out = sys.argv[2]
