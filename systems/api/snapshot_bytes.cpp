@@ -5,6 +5,7 @@
 // payload (one record per stateful type, each written beside its type,
 // gathered in the order below) and an FNV-1a checksum of all that precedes it.
 #include "systems/api/simulation_internals.hpp"
+#include "systems/api/snapshot_layout.hpp"
 
 #include "systems/api/state_records.hpp"
 
@@ -21,12 +22,6 @@ namespace snow {
 
 namespace {
 
-constexpr std::array<char, 8> snapshot_magic{'S', 'N', 'O', 'W', 'S', 'N', 'A', 'P'};
-constexpr std::uint32_t snapshot_format = 1;
-/// magic + version + payload length; then the checksum after the payload.
-constexpr std::size_t header_bytes = snapshot_magic.size() + 4 + 8;
-constexpr std::size_t checksum_bytes = 8;
-
 /// The compile-time constants whose values the saved state depends on.
 std::uint64_t build_tag() {
     StateHasher h;
@@ -34,12 +29,6 @@ std::uint64_t build_tag() {
     h.value(dirty_tile_shift);
     h.value(held_wind_steps_per_mps);
     h.value(FlakePool::parked_y);
-    return h.digest();
-}
-
-std::uint64_t checksum(std::span<const std::byte> bytes) {
-    StateHasher h;
-    h.bytes(bytes.data(), bytes.size());
     return h.digest();
 }
 
@@ -72,6 +61,12 @@ void require_valid(const ByteReader& in, const Invalid& bad) {
 
 } // namespace
 
+std::uint64_t snapshot_checksum(std::span<const std::byte> framed) {
+    StateHasher h;
+    h.bytes(framed.data(), framed.size());
+    return h.digest();
+}
+
 // Written straight from the world, in save_snapshot()'s order and extent (no copy
 // of the state first).
 std::vector<std::byte> Simulation::save_bytes() const {
@@ -99,17 +94,17 @@ std::vector<std::byte> Simulation::save_bytes() const {
     std::vector<std::byte>& bytes = out.bytes(); // the host's: allocated as it allocates
     const std::uint64_t payload = bytes.size() - payload_at;
     std::memcpy(bytes.data() + payload_at - sizeof payload, &payload, sizeof payload);
-    out(checksum(bytes));
+    out(snapshot_checksum(bytes));
     return std::move(bytes);
 }
 
 void Simulation::load_bytes(std::span<const std::byte> bytes) {
     const World& world = impl_->world;
     ByteReader head(bytes);
-    if (bytes.size() < header_bytes + checksum_bytes) {
+    if (bytes.size() < snapshot_header_bytes + snapshot_checksum_bytes) {
         head.fail("is cut short (" + std::to_string(bytes.size()) +
                   " bytes; a snapshot has at least " +
-                  std::to_string(header_bytes + checksum_bytes) + ")");
+                  std::to_string(snapshot_header_bytes + snapshot_checksum_bytes) + ")");
     }
     std::array<char, 8> magic{};
     for (char& c : magic) {
@@ -125,18 +120,19 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
     }
     std::uint64_t payload = 0;
     head(payload);
-    const std::uint64_t present = bytes.size() - header_bytes - checksum_bytes;
+    const std::uint64_t present = bytes.size() - snapshot_header_bytes - snapshot_checksum_bytes;
     if (payload != present) {
         head.fail(std::string(payload > present ? "is cut short" : "has bytes past its end") +
                   " (its header says " + std::to_string(payload) + " payload bytes, " +
                   std::to_string(present) + " are there)");
     }
     std::uint64_t sum = 0;
-    std::memcpy(&sum, bytes.data() + bytes.size() - checksum_bytes, checksum_bytes);
-    head.require(sum == checksum(bytes.first(bytes.size() - checksum_bytes)),
+    std::memcpy(&sum, bytes.data() + bytes.size() - snapshot_checksum_bytes,
+                snapshot_checksum_bytes);
+    head.require(sum == snapshot_checksum(bytes.first(bytes.size() - snapshot_checksum_bytes)),
                  "is corrupted (its checksum does not match its bytes)");
 
-    ByteReader in(bytes.subspan(header_bytes, payload));
+    ByteReader in(bytes.subspan(snapshot_header_bytes, payload));
     std::uint64_t tag = 0, scene = 0;
     in(tag);
     in.require(tag == build_tag(), "was written by a build with other simulation constants");

@@ -94,14 +94,13 @@ BodyDef lapping(BodyShape shape, float radius, std::vector<glm::vec3> path) {
 
 } // namespace
 
-std::unique_ptr<Simulation> make_stormy_yard(unsigned threads, TaskSystem* task_system,
-                                             std::uint32_t prefill) {
+std::unique_ptr<Simulation> make_stormy_yard(unsigned threads, TaskSystem* task_system) {
     YardOptions o;
     o.threads = threads;
     o.task_system = task_system;
     o.ground_cells = 64;
     o.max_flakes = 60000;
-    o.prefill = prefill;
+    o.prefill = 40000;
     o.emitter_rate = 6000.0f;
     auto sim = make_yard(o);
     Wind wind;

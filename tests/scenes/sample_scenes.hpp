@@ -41,11 +41,9 @@ struct YardOptions {
 /// mesh tent, both seen through a tilted sky camera whose lean follows the
 /// wind; a snow cover over a boulder; a snowball and a capsule walker doing
 /// laps through the ground's snow; a coarse wind field that moves snow.
-/// `task_system`, when given, runs it instead of the built-in pool; `prefill`
-/// replaces the 40000 prefilled flakes (the snapshot fuzzer keeps it small).
+/// `task_system`, when given, runs it instead of the built-in pool.
 [[nodiscard]] std::unique_ptr<Simulation> make_stormy_yard(unsigned threads,
-                                                           TaskSystem* task_system = nullptr,
-                                                           std::uint32_t prefill = 40000);
+                                                           TaskSystem* task_system = nullptr);
 
 /// Flake number `n` of prefill_flakes: uniform in the upper half of the
 /// bounds, falling at 1 m/s, mass and place deterministic in the seed.
