@@ -38,6 +38,13 @@ int main(int argc, char** argv) {
         fprintf(stderr, "snow_c_host: %s\n", snow_last_error());
         return 2;
     }
+    snow_work_budget tight;
+    snow_work_budget_default(&tight);
+    tight.flakes = 1; /* the scene's pool is larger */
+    snow_sim* refused = NULL;
+    check(snow_sim_create_from_file_within(argv[1], &tight, &refused) == SNOW_ERROR_SCENE &&
+              refused == NULL && strstr(snow_last_error(), "budget.flakes") != NULL,
+          "a scene past the host's work budget is refused, naming the budget");
     check(snow_sim_step(sim, 240) == SNOW_OK, "240 ticks");
     check(balanced(sim), "the ledger balances and snow has settled");
 

@@ -64,12 +64,37 @@ const char* snow_last_error(void) {
     return last_error.c_str();
 }
 
+void snow_work_budget_default(snow_work_budget* out) {
+    if (out == nullptr) {
+        return;
+    }
+    const snow::WorkBudget b;
+    *out = {b.snow_cells, b.surfaces,    b.collider_triangles, b.bodies,
+            b.flakes,     b.field_cells, b.field_cell_sweeps,  b.occlusion_texels};
+}
+
 snow_status snow_sim_create_from_file(const char* path, snow_sim** out) {
+    return snow_sim_create_from_file_within(path, nullptr, out);
+}
+
+snow_status snow_sim_create_from_file_within(const char* path, const snow_work_budget* budget,
+                                             snow_sim** out) {
     return guarded([&] {
         SNOW_REQUIRE(out != nullptr, "snow_sim_create_from_file: out is null");
         *out = nullptr;
         SNOW_REQUIRE(path != nullptr, "snow_sim_create_from_file: path is null");
-        snow::SceneLoadResult scene = snow::load_scene_file(path);
+        snow::SceneOverrides o;
+        if (budget != nullptr) {
+            o.budget = {budget->snow_cells,
+                        budget->surfaces,
+                        budget->collider_triangles,
+                        budget->bodies,
+                        budget->flakes,
+                        budget->field_cells,
+                        budget->field_cell_sweeps,
+                        budget->occlusion_texels};
+        }
+        snow::SceneLoadResult scene = snow::load_scene_file(path, o);
         if (!scene.sim) {
             return fail(SNOW_ERROR_SCENE, scene.error);
         }

@@ -47,8 +47,28 @@ typedef struct snow_grid {
 /* The text of the last failed call on this thread ("" when none failed). */
 const char* snow_last_error(void);
 
+/* The most work a scene file may declare (docs/scenes.md, "Work budget"):
+ * a file past any of these is refused with SNOW_ERROR_SCENE, naming the
+ * declaration, before anything is allocated. */
+typedef struct snow_work_budget {
+    uint64_t snow_cells;         /* the surfaces' and the cover's cells together */
+    uint64_t surfaces;           /* snow surfaces */
+    uint64_t collider_triangles; /* triangles of the mesh colliders */
+    uint64_t bodies;             /* moving bodies */
+    uint64_t flakes;             /* the flake pool (max_flakes) */
+    uint64_t field_cells;        /* the wind field's cells */
+    uint64_t field_cell_sweeps;  /* field cells times pressure_iterations */
+    uint64_t occlusion_texels;   /* the sky map's resolution squared */
+} snow_work_budget;
+
+/* The default budget: every shipped scene fits several times over. */
+void snow_work_budget_default(snow_work_budget* out);
+
 /* Loads a .gltf or .glb scene file into a new simulation (*out); *out is null on failure. */
 snow_status snow_sim_create_from_file(const char* path, snow_sim** out);
+/* The same within `budget` (null: the default budget). */
+snow_status snow_sim_create_from_file_within(const char* path, const snow_work_budget* budget,
+                                             snow_sim** out);
 /* Frees a simulation (null is fine). */
 void snow_sim_destroy(snow_sim* sim);
 
