@@ -161,6 +161,11 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
         WindFieldDef def;
         load_def(in, def);
         require_valid(in, validate(def));
+        // A float per cell at least follows: a grid the bytes cannot hold is
+        // corrupt, and is refused before it is allocated (a fuzz finding:
+        // 22 KB that declared a field of millions of cells).
+        in.require(std::uint64_t{def.cells_x} * def.cells_y * def.cells_z <= in.left() / 4,
+                   "declares a wind field larger than its bytes");
         s.wind_field = make_wind_field(def, config().bounds);
         load_state(in, *s.wind_field);
         if (s.wind_field->transport) {

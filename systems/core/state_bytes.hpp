@@ -124,9 +124,10 @@ class ByteReader {
     void operator()(std::vector<T, A>& v) {
         std::uint64_t n = 0;
         (*this)(n);
-        // Each element takes at least one byte: a count past the end is corrupt
-        // (and is refused before anything is allocated for it).
-        if (n > left()) {
+        // Each element takes at least one byte (a scalar its size): a count
+        // past the end is corrupt, and is refused before anything is
+        // allocated for it.
+        if (n > left() / (ByteScalar<T> ? sizeof(T) : 1)) {
             fail("holds a count past the end of the bytes");
         }
         v.resize(static_cast<std::size_t>(n));

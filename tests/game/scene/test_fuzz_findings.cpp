@@ -17,11 +17,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The kept findings of `target` (none yet: git keeps no empty folder).
 std::vector<fs::path> findings(const std::string& target) {
     std::vector<fs::path> files;
-    for (const auto& e :
-         fs::directory_iterator(std::string(SNOW_SOURCE_DIR) + "/fuzz/regressions/" + target)) {
-        files.push_back(e.path());
+    const fs::path folder = std::string(SNOW_SOURCE_DIR) + "/fuzz/regressions/" + target;
+    if (fs::is_directory(folder)) {
+        for (const auto& e : fs::directory_iterator(folder)) {
+            files.push_back(e.path());
+        }
     }
     return files;
 }
