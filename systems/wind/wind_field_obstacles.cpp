@@ -51,6 +51,11 @@ bool cell_of(const WindField& f, const glm::vec3& p, std::int32_t (&cell)[3]) {
 struct Marker {
     const WindField& f;
     Vector<std::uint8_t>& solid;
+    /// Triangle samples left: 64 per field cell bounds the work of any mesh
+    /// (bounded work, docs/reliability.md). Meshes that would need more (a
+    /// fuzz finding: 16 384 kilometre-wide triangles took minutes) mark what
+    /// their first samples reach, in mesh order.
+    std::uint64_t samples_left = 64 * std::uint64_t{f.n[0]} * f.n[1] * f.n[2];
 
     void mark(std::int32_t i, std::int32_t j, std::int32_t k) {
         solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
@@ -97,16 +102,52 @@ struct Marker {
 
     /// Points on the triangle closer together than half the smallest cell
     /// edge: consecutive points fall in the same or touching cells, so the
-    /// marked cells form a surface air cannot pass between.
-    void triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+    /// marked cells form a surface air cannot pass between. A triangle with
+    /// an edge longer than the field's diagonal is split at its edges'
+    /// midpoints, and parts whose box misses the field are dropped, so the
+    /// work stays near the field's size whatever the triangle's (a fuzz
+    /// finding: kilometre-sized triangles took minutes).
+    void triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, int depth = 0) {
+        const float max_steps =
+            2.0f *
+                std::sqrt(static_cast<float>(f.n[0] * f.n[0] + f.n[1] * f.n[1] + f.n[2] * f.n[2])) +
+            2.0f;
+        constexpr int max_depth = 160; // halvings from the largest float to any cell
+        if (samples_left == 0) {
+            return;
+        }
+        for (int a = 0; a < 3; ++a) {
+            const double lo = std::min({p0[a], p1[a], p2[a]}), hi = std::max({p0[a], p1[a], p2[a]});
+            const double cell = 1.0 / f.inv_cell[a];
+            if (hi < f.origin[a] - cell || lo > f.origin[a] + (f.n[a] + 1) * cell) {
+                return;
+            }
+        }
         const float spacing = 0.5f / std::max({f.inv_cell.x, f.inv_cell.y, f.inv_cell.z});
         const glm::vec3 e1 = p1 - p0, e2 = p2 - p0, e3 = p2 - p1;
         const auto length = [](const glm::vec3& e) {
             return std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
         };
-        const float longest = std::max({length(e1), length(e2), length(e3)});
-        const auto steps = static_cast<std::int32_t>(std::ceil(longest / spacing));
-        const std::int32_t n = std::clamp(steps, 1, 1 << 14);
+        const float steps = std::ceil(std::max({length(e1), length(e2), length(e3)}) / spacing);
+        if (!(steps <= max_steps) && depth < max_depth) {
+            // Halves first: the sum of two large coordinates may overflow.
+            const glm::vec3 m01 = 0.5f * p0 + 0.5f * p1, m02 = 0.5f * p0 + 0.5f * p2,
+                            m12 = 0.5f * p1 + 0.5f * p2;
+            triangle(p0, m01, m02, depth + 1);
+            triangle(m01, p1, m12, depth + 1);
+            triangle(m02, m12, p2, depth + 1);
+            triangle(m01, m12, m02, depth + 1);
+            return;
+        }
+        // Clamped as a float: inf or NaN converted to an integer is undefined.
+        const std::int32_t n =
+            steps >= 1.0f ? static_cast<std::int32_t>(std::min(steps, max_steps)) : 1;
+        const std::uint64_t samples = (std::uint64_t(n) + 1) * (std::uint64_t(n) + 2) / 2;
+        if (samples > samples_left) {
+            samples_left = 0;
+            return;
+        }
+        samples_left -= samples;
         for (std::int32_t a = 0; a <= n; ++a) {
             for (std::int32_t b = 0; a + b <= n; ++b) {
                 const float s = static_cast<float>(a) / n, t = static_cast<float>(b) / n;
