@@ -164,7 +164,8 @@ void Simulation::load_bytes(std::span<const std::byte> bytes) {
         // A float per cell at least follows: a grid the bytes cannot hold is
         // corrupt, and is refused before it is allocated (a fuzz finding:
         // 22 KB that declared a field of millions of cells).
-        in.require(std::uint64_t{def.cells_x} * def.cells_y * def.cells_z <= in.left() / 4,
+        in.require(std::uint64_t{def.cells_x} * def.cells_y * def.cells_z <=
+                       in.left() / sizeof(float),
                    "declares a wind field larger than its bytes");
         s.wind_field = make_wind_field(def, config().bounds);
         load_state(in, *s.wind_field);

@@ -56,6 +56,12 @@ struct Marker {
     /// fuzz finding: 16 384 kilometre-wide triangles took minutes) mark what
     /// their first samples reach, in mesh order.
     std::uint64_t samples_left = 64 * std::uint64_t{f.n[0]} * f.n[1] * f.n[2];
+    /// Triangle samples lie closer together than half the smallest cell edge.
+    float spacing = 0.5f / std::max({f.inv_cell.x, f.inv_cell.y, f.inv_cell.z});
+    /// Most steps along a triangle's longest edge: about the field's diagonal.
+    float max_steps =
+        2.0f * std::sqrt(static_cast<float>(f.n[0] * f.n[0] + f.n[1] * f.n[1] + f.n[2] * f.n[2])) +
+        2.0f;
 
     void mark(std::int32_t i, std::int32_t j, std::int32_t k) {
         solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
@@ -108,10 +114,6 @@ struct Marker {
     /// work stays near the field's size whatever the triangle's (a fuzz
     /// finding: kilometre-sized triangles took minutes).
     void triangle(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, int depth = 0) {
-        const float max_steps =
-            2.0f *
-                std::sqrt(static_cast<float>(f.n[0] * f.n[0] + f.n[1] * f.n[1] + f.n[2] * f.n[2])) +
-            2.0f;
         constexpr int max_depth = 160; // halvings from the largest float to any cell
         if (samples_left == 0) {
             return;
@@ -123,7 +125,6 @@ struct Marker {
                 return;
             }
         }
-        const float spacing = 0.5f / std::max({f.inv_cell.x, f.inv_cell.y, f.inv_cell.z});
         const glm::vec3 e1 = p1 - p0, e2 = p2 - p0, e3 = p2 - p1;
         const auto length = [](const glm::vec3& e) {
             return std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
