@@ -58,7 +58,8 @@ for t in "${TARGETS[@]}"; do
     name=${t#fuzz_}
     work="$BUILD/fuzz/corpus/$name" findings="$BUILD/fuzz/findings/$name"
     rm -rf "$findings" && mkdir -p "$work" "$findings" # findings of this run only
-    seeds=("fuzz/corpus/$name")
+    seeds=()
+    [ -d "fuzz/corpus/$name" ] && seeds+=("fuzz/corpus/$name")
     case "$name" in
     gltf) seeds+=(assets/scenes assets/testdata) ;; # each target skips the other's inputs
     glb) seeds+=(assets/testdata) ;;
