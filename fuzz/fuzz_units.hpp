@@ -100,9 +100,7 @@ inline std::unique_ptr<Simulation> snapshot_scene() {
     field.cells_y = 4;
     field.update_every = 2;
     sim->set_wind_field(field);
-    WindTransportDef drift;
-    drift.threshold = 3.0f;
-    sim->set_wind_transport(drift);
+    sim->set_wind_transport({});
     for (int t = 0; t < 5; ++t) {
         sim->tick();
     }
@@ -126,9 +124,10 @@ inline std::string restore_and_tick(Simulation& sim, std::span<const std::byte> 
     return sim.nonfinite_count() == 0 ? "" : "non-finite state after restoring";
 }
 
-/// restore_and_tick on `bytes` as they are, then on them re-framed (their
-/// payload length and checksum made to match, snapshot_layout.hpp), so that
-/// mutated payloads reach the records instead of stopping at the checksum.
+/// restore_and_tick on `bytes` as they are, then on them re-framed (the
+/// current format, their payload length and checksum made to match,
+/// snapshot_layout.hpp), so that mutated payloads, and findings kept from an
+/// older format, reach the records instead of stopping at the frame.
 inline std::string snapshot_unit(Simulation& sim, std::span<const std::byte> bytes) {
     if (std::string problem = restore_and_tick(sim, bytes); !problem.empty()) {
         return problem;
@@ -139,6 +138,7 @@ inline std::string snapshot_unit(Simulation& sim, std::span<const std::byte> byt
     }
     std::vector<std::byte> framed(bytes.begin(), bytes.end());
     const std::uint64_t payload = framed.size() - frame;
+    std::memcpy(framed.data() + snapshot_magic.size(), &snapshot_format, sizeof snapshot_format);
     std::memcpy(framed.data() + snapshot_length_at, &payload, sizeof payload);
     const std::uint64_t sum =
         snapshot_checksum(std::span(framed).first(framed.size() - snapshot_checksum_bytes));

@@ -60,7 +60,7 @@ def scene(path, name, cell, surfaces, bodies, triangles, flakes, field, sweeps, 
                        "bounds": {"min": [-6, -0.5, -6], "max": [6, 6, 6]}},
         "emitter": {"rate": 1.0e8, "snowfall_kg_m2_h": 15.0},
         "wind": {"base": [3, 0, 1], "field": {"cells": field, "pressure_iterations": iterations,
-                                              "transport": {"threshold": 2.0}}},
+                                              "transport": {"roughness": 0.002}}},
         "occlusion": {"resolution": occlusion},
         "cover": {"min": [-5, -5], "max": [5, 5], "cell": cell}}
     doc["nodes"][0]["extras"]["snow"]["surface"]["cell"] = cell

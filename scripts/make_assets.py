@@ -295,7 +295,7 @@ def village(effects):
         # across, 78 cm up, a solver step every 4 ticks; gusts (5 m/s) lift
         # the snow where the air speeds up, over roof edges and round corners.
         wind["field"] = {"cells": [64, 16, 64], "update_every": 4,
-                         "transport": {"threshold": 4.5, "rate": 0.02}}
+                         "transport": {"roughness": 0.001}}
         fog = {"mode": "layered", "color": [0.78, 0.8, 0.84], "layer_bottom": 0.0,
                "layer_top": 3.0, "layer_density": 0.12,
                "puffs": [{"center": [4.0, 1.0, 3.0], "sigma": 1.5, "density": 0.3}]}

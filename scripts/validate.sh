@@ -46,7 +46,8 @@ seconds=$(( $(date +%s) - start ))
     echo "the row). The table is where issue #30 stands. Not in band yet: the"
     echo "roof at 40°, which one friction and one adhesion cannot hold to the code's"
     echo "gradual decline (docs/cover_and_bodies.md, roofs that slide). Not yet"
-    echo "probed: wind-packed snow's density, transport flux, drifts, convergence."
+    echo "probed: drifts behind a fence and round a cube (Tabler, Oikawa), and the"
+    echo "convergence of the quantities other than the transport's flux."
     echo
     cat "$table"
 } >"$target"

@@ -6,6 +6,7 @@
 // lines; any difference is a result that differs between the two.
 // Exit status: 0 ok, 2 any argument.
 #include "systems/flakes/snowfall.hpp"
+#include "systems/wind/saltation.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -124,6 +125,19 @@ int main(int argc, char**) {
             d.add(std::expm1(-r.uniform(0.0, 1.0)));
         }
         print("settle", d);
+    }
+    // wind_transport (systems/wind/saltation.hpp): the log law's ln(z/z0) of
+    // a read height and a roughness, and the threshold of a cell's density
+    // (e^x, fresh snow up to max_packing times the densest fresh snow).
+    {
+        Digest d;
+        Draws r{7};
+        for (std::uint32_t i = 0; i < pairs; ++i) {
+            d.add(snow::friction_per_wind(r.uniform_float(1.0e-3f, 100.0f),
+                                          r.uniform_float(1.0e-6f, 1.0e-3f)));
+            d.add(snow::threshold_friction_velocity(r.uniform(40.0, 480.0)));
+        }
+        print("transport", d);
     }
     // integrate (exponential rule): e^(−c·dt), c·dt >= 0, down to 0.
     print("expf", every_float(0.0f, 104.0f, 61, [](Digest& d, float x) { d.add(std::exp(-x)); }));

@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
         {"pile flank angle", pile_flank_angle},
         {"roof load by pitch", roof_load_by_pitch},
         {"wind over the ground", ground_wind},
+        {"saltation flux", saltation_flux},
     };
     try {
         if (!out.empty()) {

@@ -51,4 +51,8 @@ struct Probe {
 /// Still air in a closed building and the reattachment behind a cube [MT93].
 [[nodiscard]] std::vector<Row> ground_wind(const Plan& plan);
 
+/// The saltation flux over a snow field against [PG90], and at half the
+/// cell, twice the depth, half the tick and half the field's cells.
+[[nodiscard]] std::vector<Row> saltation_flux(const Plan& plan);
+
 } // namespace snow::validation

@@ -113,18 +113,16 @@ struct WindFieldDef {
     float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
 };
 
-/// Settings of the transport; see Simulation::set_wind_transport().
+/// Settings of the transport; see Simulation::set_wind_transport(). The
+/// saltation flux follows from the field's wind by a log law; its threshold
+/// from the snow's density (docs/wind_field.md "Transport").
 struct WindTransportDef {
-    /// Horizontal wind speed (m/s) below which snow stays put. Dry, loose
-    /// snow starts to drift at about 4–5 m/s measured a little above it.
-    float threshold = 5.0f;
-    /// Fraction of a cell's snow that leaves per second per m/s of wind above
-    /// the threshold (1/(m/s·s)).
-    float rate = 0.02f;
-    /// Most of a cell's snow that leaves in one field step (0..1]: keeps a
-    /// gale from emptying cells faster than the step resolves.
-    float max_fraction = 0.25f;
-    /// Height (m) above the snow top at which the wind is read.
+    /// Aerodynamic roughness length z0 (m) of the snow surface in the log
+    /// law u* = κ·U(z)/ln(z/z0). The default, 1 mm, is drifting snow's z0 at
+    /// u* ≈ 0.4 m/s by Pomeroy & Gray's saltation-layer roughness.
+    float roughness = 1.0e-3f;
+    /// Height z (m) above the snow top at which the field's wind U(z) is
+    /// read; above `roughness`.
     float height = 0.25f;
 };
 

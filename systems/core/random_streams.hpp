@@ -15,8 +15,9 @@ inline constexpr std::uint32_t spawn_rounding = 5; ///< a new parcel's mass roun
 inline constexpr std::uint32_t wind_walk = 6;      ///< the wind's bounded random walk
 inline constexpr std::uint32_t wind_gust = 7;      ///< whether a gust starts
 inline constexpr std::uint32_t roll = 8;           ///< the lower neighbour a landing rolls to
-inline constexpr std::uint32_t settle = 9;  ///< rounding of a cell's settling to whole levels
-inline constexpr std::uint32_t test = 1000; ///< tests placing random flakes or colliders
+inline constexpr std::uint32_t settle = 9;     ///< rounding of a cell's settling to whole levels
+inline constexpr std::uint32_t transport = 10; ///< rounding of a face's flux to whole units
+inline constexpr std::uint32_t test = 1000;    ///< tests placing random flakes or colliders
 inline constexpr std::uint32_t spectral_volume = 2000; ///< phases and speeds of far-field snow
 
 } // namespace snow::random_stream

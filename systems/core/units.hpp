@@ -19,6 +19,9 @@ inline constexpr std::uint32_t max_flake_units = 1000;
 [[nodiscard]] inline double fresh_snow_density(double air_c) {
     return 67.92 + 51.25 * std::exp(std::min(air_c, 0.0) / 2.59);
 }
+/// Density of snow the wind lays down (kg/m^3): the middle of wind-packed
+/// snow's 350–400 kg/m^3 (Cuffey & Paterson 2010, docs/references.md [CP10]).
+inline constexpr double wind_packed_snow_density = 375.0;
 /// Density of a snowball's packed snow (kg/m^3).
 inline constexpr double packed_snow_density = 400.0;
 

@@ -63,8 +63,10 @@ struct CellBox {
 inline constexpr std::int64_t void_level = no_ground_level;
 
 /// How many times denser than fresh snow (SimConfig::air_temperature) the
-/// most packed snow is: what bodies pack and settling reach at most.
-inline constexpr std::uint32_t max_packing = 4;
+/// most packed snow is: what bodies, settling and the wind pack at most. Six:
+/// fresh snow is at least 68 kg/m³ [HP98], so wind-packed snow (350–400,
+/// [CP10]) and a snowball's 400 kg/m³ fit at any air temperature.
+inline constexpr std::uint32_t max_packing = 6;
 
 /// The most levels compaction may take off `units` of snow: packed to
 /// max_packing times fresh density they still stand ceil(units / max_packing) levels.

@@ -83,7 +83,7 @@ void field_state_record(Io& io, Field& f, bool& transport) {
 
 template <typename Io, typename Transport>
 void transport_record(Io& io, Transport& t) {
-    for (auto* v : {&t.threshold, &t.rate, &t.max_fraction, &t.height}) {
+    for (auto* v : {&t.roughness, &t.height}) {
         io(*v);
     }
 }

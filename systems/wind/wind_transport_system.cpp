@@ -1,22 +1,33 @@
 // wind_transport: snow the wind moves (saltation). On each tick the wind
-// field steps, every cell with snow where the field's horizontal wind, read
-// `height` above the snow top, exceeds `threshold` loses a fraction of its
-// snow downwind: split between the x and z neighbours by the wind's
-// components, or as clumps where the surface ends downwind (an eave, a
-// void column, the border of a spilling surface). Below the threshold snow
-// stays, so drifts grow where obstacles slow the air [WF §6 names this as
-// missing: "a strong wind cannot blow snow off of an object"].
+// field steps, the field's wind read `height` above each cell's snow top
+// gives a friction velocity by the log law and, where it passes the
+// threshold of the cell's snow (by its density), a saltation flux per metre
+// of width [PG90] (saltation.hpp). The flux crosses the cell's downwind x
+// and z faces: it carries what arrives from upwind and takes up snow of the
+// cell while it has any, up to what the wind can carry; where the air slows
+// (or turns) the surplus is laid down. So erosion and deposition follow the
+// flux's divergence, the flux over a snow field is the same at any cell size
+// or depth, and it crosses the surface's end (an eave, a drop, a void
+// column) as clumps that fly on with the air [WF §6 names this as missing:
+// "a strong wind cannot blow snow off of an object"].
 //
-// Every move is computed from the snow as it was before any move of the
-// step, then all are applied (sources first), so the order of cells never
-// matters; units only move, the ledger total holds. Tiles whose centre sees
-// less than half the threshold are skipped whole, and only tiles under field
-// columns where the air anywhere reaches that speed are looked at: the cost
-// follows the windy area, not the surface's size.
+// The flux is quasi-steady (saltation reaches its carrying capacity within
+// metres, [PG90]): each field step sweeps every row along x, upwind cells
+// first, then every column along z (the order of the axes alternates from
+// step to step), in whole units; a face's share of a unit is rounded up or
+// down by a counter-based draw, so rounding neither loses nor favours small
+// cells. Units only move, the ledger total holds. Tiles whose centre sees
+// less than half the wind that moves fresh snow are calm, and only tiles
+// under field columns where the air anywhere reaches that speed are looked
+// at: the cost follows the windy area, not the surface's size.
+#include "ecs/rng.hpp"
 #include "systems/api/systems.hpp"
+#include "systems/core/random_streams.hpp"
 #include "systems/core/sim_config.hpp"
+#include "systems/core/units.hpp"
 #include "systems/snowpack/shed.hpp"
 #include "systems/snowpack/snow_surface.hpp"
+#include "systems/wind/saltation.hpp"
 #include "systems/wind/wind_field.hpp"
 
 #include <algorithm>
@@ -27,25 +38,41 @@ namespace snow {
 
 namespace {
 
-/// Index meaning "across the edge": the units leave as clumps.
-constexpr std::size_t off_surface = static_cast<std::size_t>(-1);
+/// Most units one face passes in one step: keeps every carry far from
+/// overflowing a cell's count (5 kg a face a step, beyond any gale).
+constexpr std::uint32_t max_face_units = 1u << 20;
 
-struct Move {
-    std::size_t from;
-    std::size_t to; ///< off_surface: clumps beyond the edge towards (dx, dz)
-    std::uint32_t units;
-    std::int8_t dx, dz;
-};
-
-/// World resource: the moves of one surface's step, the field's windy
-/// columns and a surface's tiles to look at (room for the largest:
-/// prepare_wind_transport).
+/// World resource: the field's windy columns, a surface's windy tiles and
+/// the carries of a z sweep (room for the largest: prepare_wind_transport).
 struct TransportScratch {
-    Vector<Move> moves;
     Vector<float> column_speed;     ///< per (i, k) of the centre lattice: max u² + w² (steps²)
     Vector<std::uint8_t> windy;     ///< per lower corner (k · dim x + i): reads there may be windy
     Vector<std::uint8_t> windy_row; ///< per k: some corner of it is windy
+    Vector<std::uint8_t> tile_windy; ///< per tile of the surface being swept
+    Vector<std::uint32_t> carry;     ///< per column of the surface: units arriving along z
 };
+
+/// What one field step's sweeps share.
+struct Step {
+    explicit Step(WindSampler a) : air(a) {}
+    WindSampler air;
+    const WindTransportDef* def = nullptr;
+    double per_wind = 0.0;        ///< u*/U at the read height (log law)
+    double air_kg_m3 = 0.0;       ///< density of the air
+    double g = 0.0;               ///< gravity (m/s²)
+    double fresh = 0.0;           ///< density of fresh snow (kg/m³): the lowest a cell holds
+    double fresh_threshold = 0.0; ///< u*t of fresh snow: nothing drifts below it
+    double units_per_flux =
+        0.0; ///< units a face passes per kg/(m·s) of flux: cell · seconds / unit
+    /// Levels a unit the wind lays down is packed by: 1 − fresh / wind-packed density.
+    double wind_packing = 0.0;
+    RngKey key;             ///< slot: the cell; draw: surface, rounding, axis, direction
+    std::uint32_t draw = 0; ///< this surface's first draw index
+    float k_over_m = 1.0f;  ///< drag of clumps
+};
+
+/// Index meaning "across the edge": the units leave as clumps.
+constexpr std::size_t off_surface = static_cast<std::size_t>(-1);
 
 /// The cell downwind of (ix, iz) by (dx, dz) (one of them 0), or off_surface
 /// when the snow cannot stay on the surface that way: off the grid, across a
@@ -71,44 +98,160 @@ void wind_over(const WindSampler& air, const SnowSurface& s, std::uint32_t ix, s
     air.at(x, s.top_y(s.index(ix, iz)) + height, z, u, v, w);
 }
 
-/// The moves of cell (ix, iz) under wind (u, w), appended to `out`.
-void plan_cell(const SnowSurface& s, const WindTransportDef& t, float seconds, std::uint32_t ix,
-               std::uint32_t iz, float u, float w, Vector<Move>& out) {
+/// The draw that rounds the shares of cell (ix, iz) for its face `dir` (±1)
+/// along x (`along_x`) or z; `what` 0: the flux across it, 1: the packing of
+/// what it lays. One draw per line of the sweep and step: in an even wind
+/// every cell of a line passes on the same whole units, so rounding alone
+/// never lays snow down or takes it up.
+float draw_for(const Step& st, std::uint32_t ix, std::uint32_t iz, bool along_x, int dir,
+               std::uint32_t what) {
+    RngKey key = st.key;
+    key.slot = along_x ? iz : ix;
+    return rng_uniform(key, st.draw + 4 * what + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
+}
+
+/// `share` rounded down, or up with the probability of its fraction.
+std::uint32_t whole_units(double share, float draw) {
+    const double whole = std::floor(share);
+    return static_cast<std::uint32_t>(whole) + (static_cast<double>(draw) < share - whole ? 1 : 0);
+}
+
+/// Units the flux carries this step across the face of cell (ix, iz) that
+/// lies `dir` (±1) along x (`along_x`) or z: 0 unless the wind blows that way
+/// fast enough to move the cell's snow.
+std::uint32_t face_units(const SnowSurface& s, const Step& st, const TransportScratch& scratch,
+                         std::uint32_t ix, std::uint32_t iz, bool along_x, int dir) {
+    if (scratch.tile_windy[s.tile_of(ix, iz)] == 0) {
+        return 0;
+    }
+    float u = 0.0f, w = 0.0f;
+    wind_over(st.air, s, ix, iz, st.def->height, u, w);
+    const float along = along_x ? u : w;
+    if (!(along * static_cast<float>(dir) > 0.0f)) {
+        return 0;
+    }
+    const double speed = std::sqrt(static_cast<double>(u) * u + static_cast<double>(w) * w);
+    const double u_star = st.per_wind * speed;
+    if (!(u_star > st.fresh_threshold)) {
+        return 0;
+    }
     const std::size_t i = s.index(ix, iz);
-    const float speed = std::sqrt(u * u + w * w);
-    if (!(speed > t.threshold)) {
-        return;
+    const std::int64_t levels = s.depth_levels(i);
+    const double density =
+        s.snow[i] == 0 || levels <= 0
+            ? st.fresh
+            : st.fresh * static_cast<double>(s.snow[i]) / static_cast<double>(levels);
+    const double flux =
+        saltation_flux(u_star, threshold_friction_velocity(density), st.air_kg_m3, st.g);
+    const double share = flux * st.units_per_flux * std::abs(static_cast<double>(along)) / speed;
+    if (!(share < max_face_units)) {
+        return max_face_units;
     }
-    const float fraction = std::min(t.max_fraction, t.rate * (speed - t.threshold) * seconds);
-    const auto units = static_cast<std::uint32_t>(static_cast<float>(s.snow[i]) * fraction);
-    if (units == 0) {
-        return;
+    return whole_units(share, draw_for(st, ix, iz, along_x, dir, 0));
+}
+
+/// Lays `units` the flux along (dx, dz) drops into cell i, up to the cell's
+/// limit, as wind-packed snow [CP10]: returns what did not fit.
+std::uint32_t lay(SnowSurface& s, const Step& st, std::size_t i, int dx, int dz,
+                  std::uint32_t units) {
+    const std::uint32_t laid = std::min(units, max_cell_units - s.snow[i]);
+    if (laid == 0) {
+        return units;
     }
-    const float along_x = std::abs(u) / (std::abs(u) + std::abs(w));
-    const auto ux = static_cast<std::uint32_t>(std::lround(static_cast<float>(units) * along_x));
-    const int dx = u < 0.0f ? -1 : 1, dz = w < 0.0f ? -1 : 1;
-    const std::uint32_t parts[2] = {ux, units - ux};
-    const int steps[2][2] = {{dx, 0}, {0, dz}};
-    for (int k = 0; k < 2; ++k) {
-        if (parts[k] == 0) {
-            continue;
+    s.snow[i] += laid;
+    s.mark_dirty(i);
+    const std::uint32_t room =
+        max_compaction(s.snow[i]) - (s.compacted.empty() ? 0 : s.compacted[i]);
+    const double packing = static_cast<double>(laid) * st.wind_packing;
+    s.compact(i,
+              std::min(room, whole_units(packing, draw_for(st, static_cast<std::uint32_t>(i % s.nx),
+                                                           static_cast<std::uint32_t>(i / s.nx),
+                                                           dx != 0, dx + dz, 1))));
+    return units - laid;
+}
+
+/// The flux's step through cell (ix, iz) along (dx, dz): `carry` arrives
+/// from upwind; returns what leaves across the downwind face (0 where that
+/// face leads off the surface: those units left as clumps, or, on a surface
+/// that never spills, stayed).
+std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& scratch,
+                        FlakePool& pool, std::uint32_t ix, std::uint32_t iz, int dx, int dz,
+                        std::uint32_t carry) {
+    const std::size_t i = s.index(ix, iz);
+    if (s.is_void(i)) {
+        return 0; // nothing reaches a void column (downwind() stops short of it)
+    }
+    const std::size_t next = downwind(s, ix, iz, dx, dz);
+    std::uint32_t out = 0;
+    if (next != off_surface || s.spills) {
+        const std::uint32_t capacity = face_units(s, st, scratch, ix, iz, dx != 0, dx + dz);
+        const std::uint32_t taken = std::min(capacity - std::min(capacity, carry), s.snow[i]);
+        if (taken != 0) {
+            s.snow[i] -= taken;
+            s.fit_compaction(i);
+            s.mark_dirty(i);
         }
-        const std::size_t to = downwind(s, ix, iz, steps[k][0], steps[k][1]);
-        if (to == off_surface && !s.spills) {
-            continue; // a surface that never spills keeps its snow at the border
+        // What the wind cannot carry on is laid here; what does not fit goes on.
+        const std::uint32_t through = std::min(carry, capacity);
+        out = through + taken + lay(s, st, i, dx, dz, carry - through);
+    } else {
+        out = lay(s, st, i, dx, dz, carry); // a closed end: only a full cell lets units on
+    }
+    if (out == 0 || next != off_surface) {
+        return out;
+    }
+    const std::uint32_t flown = shed_units(pool, out, clump_beyond(s, ix, iz, dx, dz, st.k_over_m));
+    // A full pool keeps the rest here. None may be lost, so they stay even
+    // past the cell's limit (a full pool at a full cell): at most the carry
+    // over it, far inside the count's range.
+    if (out != flown) {
+        s.snow[i] += out - flown;
+        s.mark_dirty(i);
+    }
+    return 0;
+}
+
+/// Sweeps every row of [x0, x1) × [z0, z1) along x, each way, upwind first.
+void sweep_x(SnowSurface& s, const Step& st, const TransportScratch& scratch, FlakePool& pool,
+             std::uint32_t x0, std::uint32_t x1, std::uint32_t z0, std::uint32_t z1) {
+    for (std::uint32_t iz = z0; iz < z1; ++iz) {
+        std::uint32_t carry = 0;
+        for (std::uint32_t ix = x0; ix < x1; ++ix) {
+            carry = pass_cell(s, st, scratch, pool, ix, iz, 1, 0, carry);
         }
-        out.push_back({i, to, parts[k], static_cast<std::int8_t>(steps[k][0]),
-                       static_cast<std::int8_t>(steps[k][1])});
+        carry = 0;
+        for (std::uint32_t ix = x1; ix-- > x0;) {
+            carry = pass_cell(s, st, scratch, pool, ix, iz, -1, 0, carry);
+        }
+    }
+}
+
+/// Sweeps every column of [x0, x1) × [z0, z1) along z, each way, upwind
+/// first, a row at a time (the carries are per column).
+void sweep_z(SnowSurface& s, const Step& st, TransportScratch& scratch, FlakePool& pool,
+             std::uint32_t x0, std::uint32_t x1, std::uint32_t z0, std::uint32_t z1) {
+    Vector<std::uint32_t>& carry = scratch.carry;
+    carry.assign(s.nx, 0);
+    for (std::uint32_t iz = z0; iz < z1; ++iz) {
+        for (std::uint32_t ix = x0; ix < x1; ++ix) {
+            carry[ix] = pass_cell(s, st, scratch, pool, ix, iz, 0, 1, carry[ix]);
+        }
+    }
+    carry.assign(s.nx, 0);
+    for (std::uint32_t iz = z1; iz-- > z0;) {
+        for (std::uint32_t ix = x0; ix < x1; ++ix) {
+            carry[ix] = pass_cell(s, st, scratch, pool, ix, iz, 0, -1, carry[ix]);
+        }
     }
 }
 
 /// The lower corners (i, k), in x and z, of the trilinear reads of the field
-/// that may see a horizontal wind of half the threshold, at any height: a
+/// that may see a horizontal wind of half `calm` (m/s), at any height: a
 /// read is a convex blend of its 8 corners, so it is no faster than the
 /// fastest of them. Corners are read as held steps (held_wind.hpp), within
 /// half a step of the cell-centre velocities scanned here: a step of margin
 /// covers that and float rounding.
-void windy_columns(const WindField& f, float threshold, TransportScratch& scratch) {
+void windy_columns(const WindField& f, float calm, TransportScratch& scratch) {
     const Lattice& c = f.centre;
     const std::int32_t nx = c.dim[0], ny = c.dim[1], nz = c.dim[2];
     Vector<float>& top = scratch.column_speed;
@@ -123,7 +266,7 @@ void windy_columns(const WindField& f, float threshold, TransportScratch& scratc
             }
         }
     }
-    const float half = std::max(0.0f, 0.5f * threshold - 1.0f / held_wind_steps_per_mps);
+    const float half = std::max(0.0f, 0.5f * calm - 1.0f / held_wind_steps_per_mps);
     const float limit = half * half;
     scratch.windy.assign(top.size(), 0);
     scratch.windy_row.assign(static_cast<std::size_t>(nz), 0);
@@ -140,21 +283,28 @@ void windy_columns(const WindField& f, float threshold, TransportScratch& scratc
     }
 }
 
-/// Plans the moves of every windy tile of `s`, row by row. A tile whose
-/// centre's field read has a calm lower corner (windy_columns) is calm
-/// without the read, and a row of tiles over a calm row of corners is
-/// skipped whole, so the cost follows the windy area.
-void plan_surface(const SnowSurface& s, const WindField& f, const TransportScratch& scratch,
-                  const WindTransportDef& t, float seconds, Vector<Move>& out) {
-    const WindSampler air = f.sampler();
+/// Cells [x0, x1) × [z0, z1) holding every windy tile of a surface.
+struct WindyBox {
+    std::uint32_t x0, x1, z0, z1;
+};
+
+/// Marks the windy tiles of `s` (scratch.tile_windy) and returns their
+/// bounding box, empty (x0 == x1) where all are calm. A tile whose centre's
+/// field read has a calm lower corner (windy_columns) is calm without the
+/// read, and a row of tiles over a calm row of corners is skipped whole;
+/// else it is windy where its centre sees half of `calm` (m/s).
+WindyBox windy_tiles(const SnowSurface& s, const WindField& f, const Step& st, float calm,
+                     TransportScratch& scratch) {
     const std::uint32_t side = 1u << dirty_tile_shift;
     const auto dim_x = static_cast<std::size_t>(f.centre.dim[0]);
+    scratch.tile_windy.assign(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), 0);
+    WindyBox box{s.nx, 0, s.nz, 0};
     for (std::uint32_t tz = 0; tz < s.tiles_z(); ++tz) {
         const std::uint32_t z0 = tz * side, z1 = std::min(z0 + side, s.nz);
         const std::uint32_t cz = (z0 + z1) / 2; // the centre cell wind_over reads
         const float z = s.z0 + (static_cast<float>(cz) + 0.5f) * s.cell;
         // The read's lower corner in x and z (its height does not move them).
-        const auto k = static_cast<std::size_t>(air.point(f.origin.x, f.origin.y, z).k);
+        const auto k = static_cast<std::size_t>(st.air.point(f.origin.x, f.origin.y, z).k);
         if (scratch.windy_row[k] == 0) {
             continue;
         }
@@ -162,51 +312,21 @@ void plan_surface(const SnowSurface& s, const WindField& f, const TransportScrat
             const std::uint32_t x0 = tx * side, x1 = std::min(x0 + side, s.nx);
             const std::uint32_t cx = (x0 + x1) / 2;
             const float x = s.x0 + (static_cast<float>(cx) + 0.5f) * s.cell;
-            const auto i = static_cast<std::size_t>(air.point(x, f.origin.y, z).i);
+            const auto i = static_cast<std::size_t>(st.air.point(x, f.origin.y, z).i);
             if (scratch.windy[k * dim_x + i] == 0) {
                 continue;
             }
             float u = 0.0f, w = 0.0f;
-            wind_over(air, s, cx, cz, t.height, u, w);
-            if (!(u * u + w * w > 0.25f * t.threshold * t.threshold)) {
-                continue; // the tile is calm: no cell of it can drift
+            wind_over(st.air, s, cx, cz, st.def->height, u, w);
+            if (!(u * u + w * w > 0.25f * calm * calm)) {
+                continue;
             }
-            for (std::uint32_t iz = z0; iz < z1; ++iz) {
-                for (std::uint32_t ix = x0; ix < x1; ++ix) {
-                    if (s.snow[s.index(ix, iz)] != 0) {
-                        wind_over(air, s, ix, iz, t.height, u, w);
-                        plan_cell(s, t, seconds, ix, iz, u, w, out);
-                    }
-                }
-            }
+            scratch.tile_windy[static_cast<std::size_t>(tz) * s.tiles_x() + tx] = 1;
+            box = {std::min(box.x0, x0), std::max(box.x1, x1), std::min(box.z0, z0),
+                   std::max(box.z1, z1)};
         }
     }
-}
-
-/// Sources first (each gives at most what it had), then destinations; what
-/// cannot arrive (a full pool, a cell at its limit) goes back to its source.
-void apply(SnowSurface& s, const Vector<Move>& moves, FlakePool& pool, float k_over_m) {
-    for (const Move& m : moves) {
-        s.snow[m.from] -= m.units;
-        s.mark_dirty(m.from);
-    }
-    for (const Move& m : moves) {
-        std::uint32_t arrived = 0;
-        if (m.to == off_surface) {
-            const auto ix = static_cast<std::uint32_t>(m.from % s.nx);
-            const auto iz = static_cast<std::uint32_t>(m.from / s.nx);
-            arrived = shed_units(pool, m.units, clump_beyond(s, ix, iz, m.dx, m.dz, k_over_m));
-        } else {
-            arrived = std::min(m.units, max_cell_units - s.snow[m.to]);
-            s.snow[m.to] += arrived;
-            s.mark_dirty(m.to);
-        }
-        s.snow[m.from] += m.units - arrived;
-    }
-    // Once every move arrived: a source keeps the compaction its units still hold.
-    for (const Move& m : moves) {
-        s.fit_compaction(m.from);
-    }
+    return box.x0 < box.x1 ? box : WindyBox{0, 0, 0, 0};
 }
 
 } // namespace
@@ -229,11 +349,13 @@ void prepare_wind_transport(World& w) {
     scratch->column_speed.reserve(columns);
     scratch->windy.reserve(columns);
     scratch->windy_row.reserve(static_cast<std::size_t>(c.dim[2]));
-    // At most two moves per cell (plan_cell) of the largest surface.
-    std::size_t largest = 0;
-    w.each<SnowSurface>(
-        [&](Entity, const SnowSurface& s) { largest = std::max(largest, s.cell_count()); });
-    scratch->moves.reserve(2 * largest);
+    std::size_t tiles = 0, row = 0;
+    w.each<SnowSurface>([&](Entity, const SnowSurface& s) {
+        tiles = std::max(tiles, static_cast<std::size_t>(s.tiles_x()) * s.tiles_z());
+        row = std::max(row, static_cast<std::size_t>(s.nx));
+    });
+    scratch->tile_windy.reserve(tiles);
+    scratch->carry.reserve(row);
 }
 
 void wind_transport_system(World& w) {
@@ -242,17 +364,42 @@ void wind_transport_system(World& w) {
     if (f.steps == 0 || f.wait + 1 != f.def.update_every) {
         return;
     }
-    const WindTransportDef& t = *f.transport;
-    const float seconds = w.resource<SimConfig>().dt * static_cast<float>(f.def.update_every);
+    const SimConfig& config = w.resource<SimConfig>();
+    Step st(f.sampler());
+    st.def = &*f.transport;
+    st.per_wind = friction_per_wind(st.def->height, st.def->roughness);
+    st.air_kg_m3 = air_density(config.air_temperature);
+    st.g = std::abs(static_cast<double>(config.gravity.y));
+    st.fresh = fresh_snow_density(config.air_temperature);
+    st.fresh_threshold = threshold_friction_velocity(st.fresh);
+    st.wind_packing = 1.0 - st.fresh / wind_packed_snow_density;
+    st.key = {config.seed, f.steps, 0, random_stream::transport};
+    st.k_over_m = clump_drag(w);
+    const float seconds = config.dt * static_cast<float>(f.def.update_every);
+    // The wind (m/s at the read height) that moves fresh snow.
+    const auto calm = static_cast<float>(st.fresh_threshold / st.per_wind);
     prepare_wind_transport(w);
-    auto* scratch = &w.resource<TransportScratch>();
+    auto& scratch = w.resource<TransportScratch>();
     FlakePool& pool = w.resource<FlakePool>();
-    const float k_over_m = clump_drag(w);
-    windy_columns(f, t.threshold, *scratch);
-    w.each<SnowSurface>([&](Entity, SnowSurface& s) {
-        scratch->moves.clear();
-        plan_surface(s, f, *scratch, t, seconds, scratch->moves);
-        apply(s, scratch->moves, pool, k_over_m);
+    windy_columns(f, calm, scratch);
+    const bool x_first = f.steps % 2 == 0;
+    w.each<SnowSurface>([&](Entity e, SnowSurface& s) {
+        st.units_per_flux = static_cast<double>(s.cell) * seconds / unit_kg;
+        st.draw = 8 * e.index();
+        const WindyBox b = windy_tiles(s, f, st, calm, scratch);
+        if (b.x0 == b.x1) {
+            return;
+        }
+        // One cell beyond the windy tiles: where their flux is laid down.
+        const std::uint32_t x0 = b.x0 - (b.x0 > 0 ? 1 : 0), x1 = std::min(b.x1 + 1, s.nx);
+        const std::uint32_t z0 = b.z0 - (b.z0 > 0 ? 1 : 0), z1 = std::min(b.z1 + 1, s.nz);
+        for (int axis = 0; axis < 2; ++axis) {
+            if ((axis == 0) == x_first) {
+                sweep_x(s, st, scratch, pool, x0, x1, z0, z1);
+            } else {
+                sweep_z(s, st, scratch, pool, x0, x1, z0, z1);
+            }
+        }
     });
 }
 

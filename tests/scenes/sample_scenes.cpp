@@ -154,9 +154,7 @@ std::unique_ptr<Simulation> make_stormy_yard(unsigned threads, TaskSystem* task_
     field.cells_y = 8;
     field.update_every = 2;
     sim->set_wind_field(field);
-    WindTransportDef drift; // gusts lift the snow off the windward ends
-    drift.threshold = 3.0f;
-    sim->set_wind_transport(drift);
+    sim->set_wind_transport({}); // gusts lift the snow off the windward ends
     return sim;
 }
 

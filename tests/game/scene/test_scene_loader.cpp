@@ -194,7 +194,7 @@ TEST(SceneLoader, VillageEffectsAddsSpectralLayeredFogGustsAndAWindField) {
     EXPECT_EQ(f.n[2], 64u);
     EXPECT_EQ(f.def.update_every, 4u);
     ASSERT_TRUE(f.transport.has_value());
-    EXPECT_FLOAT_EQ(f.transport->threshold, 4.5f);
+    EXPECT_FLOAT_EQ(f.transport->roughness, 0.001f);
 }
 
 TEST(SceneLoader, MemoryLoadOfEmbeddedSceneMatchesFileLoad) {

@@ -3,6 +3,7 @@
 // bytes cut short, flipped, of another version or another scene are refused
 // with one error naming what is wrong, and the simulation stays as it was.
 #include "ecs/state_hash.hpp"
+#include "systems/api/snapshot_layout.hpp"
 #include "tests/scenes/sample_scenes.hpp"
 #include "tests/support/snapshot_check.hpp"
 
@@ -136,9 +137,13 @@ TEST(SnapshotBytes, AnotherVersionOrAnotherSceneIsNamed) {
     bad_magic[0] = std::byte{'X'};
     expect_refused(*sim, bad_magic, "not a snow snapshot");
     std::vector<std::byte> newer = bytes;
-    newer[8] = std::byte{2}; // format version 2
+    newer[8] = static_cast<std::byte>(snapshot_format + 1); // a newer format
     reseal(newer);
-    expect_refused(*sim, newer, "format version 2");
+    expect_refused(*sim, newer, "format version " + std::to_string(snapshot_format + 1));
+    std::vector<std::byte> older = bytes;
+    older[8] = static_cast<std::byte>(snapshot_format - 1); // an older one
+    reseal(older);
+    expect_refused(*sim, older, "format version " + std::to_string(snapshot_format - 1));
     auto other = make_stormy_yard(1);
     expect_refused(*other, bytes, "different scene");
     YardOptions seeded;
