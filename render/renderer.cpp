@@ -13,6 +13,7 @@
 #include "render/passes/sun_cascades.hpp"
 #include "render/passes/surface_pass.hpp"
 #include "render/passes/wind_field_pass.hpp"
+#include "render/visual_rules.hpp"
 #include "systems/api/simulation_internals.hpp"
 #include "systems/bodies/body.hpp"
 #include "systems/sky/occlusion.hpp"
@@ -273,6 +274,12 @@ void render_world(Renderer& renderer, const World& world, const SceneVisuals& vi
     const bool has_occlusion =
         map != nullptr && map->width > 0 && map->height > 0 && map->texel > 0.0f;
     const Fog* fog = visuals.fog ? &*visuals.fog : nullptr;
+    if (visuals.sun) {
+        // Its direction is normalised below: a host's bad sun is refused, not drawn as NaN.
+        if (const Invalid error = validate(*visuals.sun); !error.empty()) {
+            throw RenderError("SceneVisuals::" + error.text());
+        }
+    }
     const bool sun_shadows = visuals.sun && m.settings.sun_shadows;
     std::optional<SunCascades> cascades;
     if (sun_shadows) {

@@ -119,6 +119,22 @@ TEST(RenderSun, WithoutASunNothingOfItIsDrawnOrCompiled) {
     EXPECT_EQ(shadowed, 0u);
 }
 
+TEST(RenderSun, ABadSunIsRefusedByItsField) {
+    FixtureScene scene;
+    build_sunny_scene(scene);
+    scene.visuals.sun->direction = glm::vec3(0.0f);
+    auto context = headless_context();
+    Renderer renderer(*context);
+    try {
+        render_world(renderer, scene.world, scene.visuals, scene.camera);
+        ADD_FAILURE() << "a sun without a direction was drawn";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("sun.direction must be of length > 0"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(RenderSun, ShadowPassComesFirstAndCastersDrawDepthOnly) {
     FixtureScene scene;
     build_sunny_scene(scene);
