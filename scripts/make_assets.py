@@ -23,7 +23,8 @@ the same bytes (--check exits 1 if a file would change). Scenes:
                         spectral layer, default bounds.
   park.gltf             no declared surfaces at all: hilly terrain (a mesh), a
                         statue of spheres and boxes on a plinth, three benches,
-                        five cone trees, and a snow cover over everything.
+                        five cone trees, a snow cover over everything, and
+                        an afternoon sun (the trees' shadows on the snow).
 """
 
 import base64
@@ -424,6 +425,9 @@ def park():
         "camera": {"position": [0.0, 6.0, 14.0], "target": [0.0, 1.0, 0.0], "fov_y_deg": 50.0,
                    "near_plane": 0.05, "far_plane": 200.0},
         "environment": ENVIRONMENT,
+        # A winter afternoon sun from the south-west: the pines' and the
+        # statue's shadows fall across the snow towards the camera's right.
+        "sun": {"direction": [-0.5, 0.55, -0.6], "color": [1.0, 0.95, 0.86], "intensity": 4.0},
     }
     return g.document("park", [ground, statue] + benches + trees, snow)
 
