@@ -7,10 +7,13 @@
 #include "render/passes/fog_table.hpp"
 #include "render/passes/mesh_pass.hpp"
 #include "render/passes/scene_textures.hpp"
+#include "render/passes/shadow_pass.hpp"
 #include "render/passes/sky_pass.hpp"
 #include "render/passes/spectral_pass.hpp"
+#include "render/passes/sun_cascades.hpp"
 #include "render/passes/surface_pass.hpp"
 #include "render/passes/wind_field_pass.hpp"
+#include "render/visual_rules.hpp"
 #include "systems/api/simulation_internals.hpp"
 #include "systems/bodies/body.hpp"
 #include "systems/sky/occlusion.hpp"
@@ -24,6 +27,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace snow {
 
@@ -63,6 +70,19 @@ std::vector<std::string> fog_defines(const Fog* fog) {
     return {};
 }
 
+/// The exposure a sun sets, like a photographer's "sunny 16" rule [S16]: from
+/// the sun alone, not the lamps, so that flat snow in full sun comes out at
+/// the same radiance (1.1 before the filmic curve: about 220 of 255) whatever
+/// the sun's strength; `setting` (RenderSettings::exposure) scales it. A sun
+/// lower than 12° is metered as if at 12°.
+float sun_exposure(const Sun& sun, float setting) {
+    constexpr float sunlit_snow = 1.1f;
+    constexpr float snow_albedo = 0.9f; // as in common.glsl [WAR]
+    const float height = std::max(glm::normalize(sun.direction).y, 0.2f);
+    const float flat = snow_albedo * clamp_non_negative(sun.intensity) * height;
+    return flat > 0.0f ? clamp_non_negative(setting) * sunlit_snow / flat : 0.0f;
+}
+
 GlContext& made_current(GlContext& c) {
     c.make_current();
     return c;
@@ -87,7 +107,7 @@ struct Renderer::Impl {
 
     void fill_block(FrameBlock& b, const World& world, const SceneVisuals& visuals,
                     const ViewCamera& camera, const glm::mat4& view_proj, glm::ivec2 viewport,
-                    bool has_occlusion) const;
+                    bool has_occlusion, const SunCascades* cascades) const;
     void add_effect_passes(const World& world, const SceneVisuals& visuals);
     [[nodiscard]] bool has_pass(std::string_view name) const;
 };
@@ -120,7 +140,8 @@ Renderer::~Renderer() {
 
 void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVisuals& visuals,
                                 const ViewCamera& camera, const glm::mat4& view_proj,
-                                glm::ivec2 viewport, bool has_occlusion) const {
+                                glm::ivec2 viewport, bool has_occlusion,
+                                const SunCascades* cascades) const {
     b.view_proj = view_proj;
     b.inv_view_proj = glm::inverse(view_proj);
     b.camera_pos = glm::vec4(camera.position, 1.0f);
@@ -143,10 +164,27 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVi
             ++lights;
         }
     }
-    // A scene without lights still shows its shapes: a soft sun from above.
-    b.sun = lights == 0 ? glm::vec4(glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)), 0.8f)
-                        : glm::vec4(0.0f);
-    b.counts = {lights, 0, 0, 0};
+    if (const Sun* sun = visuals.sun ? &*visuals.sun : nullptr) {
+        // A declared sun is shaded apart from the ambient (shade() in common.glsl).
+        b.sun = glm::vec4(glm::normalize(sun->direction), 0.0f);
+        b.sun_color = glm::vec4(sun->color * clamp_non_negative(sun->intensity),
+                                sun_exposure(*sun, settings.exposure));
+    } else {
+        // A scene without lights still shows its shapes: a soft sun from above.
+        b.sun = lights == 0 ? glm::vec4(glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f)), 0.8f)
+                            : glm::vec4(0.0f);
+    }
+    if (cascades != nullptr) {
+        b.view_forward = glm::vec4(camera.forward(), 0.0f);
+        for (int i = 0; i < sun_cascade_count; ++i) {
+            const auto c = static_cast<std::size_t>(i);
+            b.sun_atlas[i] = cascades->to_atlas[c];
+            b.cascade_far[i] = cascades->far[c];
+            b.cascade_texel[i] = cascades->texel[c];
+        }
+        b.cascade_texel.w = 1.0f / static_cast<float>(settings.shadow_map_size);
+    }
+    b.counts = {lights, 0, 0, static_cast<int>(settings.output)};
     if (const Fog* fog = visuals.fog ? &*visuals.fog : nullptr) {
         const float fog_param = fog->mode == FogMode::half_life
                                     ? (fog->half_distance > 0.0f ? 1.0f / fog->half_distance : 0.0f)
@@ -181,6 +219,10 @@ void Renderer::Impl::add_effect_passes(const World& world, const SceneVisuals& v
         const auto flakes = std::find_if(passes.begin(), passes.end(),
                                          [](const auto& p) { return p->name() == "flakes"; });
         passes.insert(flakes, std::make_unique<SpectralPass>());
+    }
+    if (visuals.sun && !has_pass(ShadowPass::pass_name)) {
+        // First: the lit passes sample the cascades it draws.
+        passes.insert(passes.begin(), std::make_unique<ShadowPass>(passes, settings));
     }
     if (world.count<Body>() > 0 && !has_pass(BodyPass::pass_name)) {
         // Opaque, beside the meshes: the snow surfaces blend over both.
@@ -232,9 +274,28 @@ void render_world(Renderer& renderer, const World& world, const SceneVisuals& vi
     const bool has_occlusion =
         map != nullptr && map->width > 0 && map->height > 0 && map->texel > 0.0f;
     const Fog* fog = visuals.fog ? &*visuals.fog : nullptr;
+    if (visuals.sun) {
+        // Its direction is normalised below: a host's bad sun is refused, not drawn as NaN.
+        if (const Invalid error = validate(*visuals.sun); !error.empty()) {
+            throw RenderError("SceneVisuals::" + error.text());
+        }
+    }
+    const bool sun_shadows = visuals.sun && m.settings.sun_shadows;
+    std::optional<SunCascades> cascades;
+    if (sun_shadows) {
+        if (!(m.settings.shadow_map_size >= 16 && m.settings.shadow_map_size <= 2048)) {
+            throw RenderError("RenderSettings::shadow_map_size must be in [16, 2048] (got " +
+                              std::to_string(m.settings.shadow_map_size) + ")");
+        }
+        cascades = fit_sun_cascades(camera, aspect, visuals.sun->direction,
+                                    clamp_non_negative(m.settings.shadow_distance),
+                                    m.settings.shadow_map_size);
+    }
+    const bool mask = m.settings.output != RenderOutput::color;
 
     FrameBlock block;
-    m.fill_block(block, world, visuals, camera, view_proj, viewport, has_occlusion);
+    m.fill_block(block, world, visuals, camera, view_proj, viewport, has_occlusion,
+                 cascades ? &*cascades : nullptr);
     glBindBuffer(GL_UNIFORM_BUFFER, m.frame_ubo.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, frame_block_binding, m.frame_ubo.id());
@@ -253,7 +314,11 @@ void render_world(Renderer& renderer, const World& world, const SceneVisuals& vi
     glDisable(GL_BLEND);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
-    glClearColor(block.sky.r, block.sky.g, block.sky.b, 1.0f);
+    if (mask) {
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f); // the sky is neither snow nor shadow
+    } else {
+        glClearColor(block.sky.r, block.sky.g, block.sky.b, 1.0f);
+    }
     glClearDepth(1.0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -265,13 +330,33 @@ void render_world(Renderer& renderer, const World& world, const SceneVisuals& vi
     t.passes[0].ran = true;
     t.passes[0].cpu_ms = ms_since(frame_start);
 
-    FrameContext frame{camera,     visuals,          view_proj,     viewport,   m.settings,
-                       m.programs, fog_defines(fog), has_occlusion, m.software, t};
+    std::vector<std::string> sun_defines;
+    if (visuals.sun) {
+        sun_defines.emplace_back("SUN");
+        if (sun_shadows) {
+            sun_defines.emplace_back("SUN_SHADOWS");
+        }
+    }
+    FrameContext frame{camera,
+                       visuals,
+                       view_proj,
+                       viewport,
+                       m.settings,
+                       m.programs,
+                       fog_defines(fog),
+                       has_occlusion,
+                       m.software,
+                       t,
+                       std::move(sun_defines),
+                       cascades ? &*cascades : nullptr,
+                       false,
+                       m.frame_ubo.id(),
+                       m.context.framebuffer()};
     for (std::size_t i = 0; i < m.passes.size(); ++i) {
         RenderPass& pass = *m.passes[i];
         PassTiming& pt = t.passes[i + 1];
         pt.name = pass.name();
-        pt.ran = pass.wanted(world, visuals);
+        pt.ran = pass.wanted(world, visuals) && (!mask || pass.in_masks());
         pt.cpu_ms = 0.0;
         if (!pt.ran) {
             continue;

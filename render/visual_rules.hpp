@@ -1,6 +1,6 @@
 /// @file visual_rules.hpp
 /// @brief The field tables and checks of the render-only settings a scene
-/// declares (SceneVisuals::fog [PE], [SKY] and ::spectral [LZ]): the scene
+/// declares (SceneVisuals::fog [PE], [SKY], ::spectral [LZ] and ::sun): the scene
 /// loader reports bad values by field, the renderer refuses a spectral layer
 /// it cannot build. Inline: the scene library has no GL and links no renderer.
 #pragma once
@@ -9,6 +9,7 @@
 #include "systems/core/limits.hpp"
 
 #include <bit>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -46,6 +47,23 @@ inline constexpr FieldRule<SpectralSnow> spectral_fields[] = {
     {"opacity", &SpectralSnow::opacity, between(0, 1)},
     {"start_distance", &SpectralSnow::start_distance, non_negative},
 };
+
+/// `sun.*`; the direction must also have a length (checked by validate()).
+inline constexpr FieldRule<Sun> sun_fields[] = {
+    {"direction", &Sun::direction},
+    {"color", &Sun::color, non_negative},
+    {"intensity", &Sun::intensity, non_negative},
+};
+
+[[nodiscard]] inline Invalid validate(const Sun& s) {
+    Invalid e = check_fields("sun", sun_fields, s);
+    const glm::vec3 d = s.direction;
+    const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(length > 0.0)) {
+        check::fail(e, "sun.direction", "of length > 0", length);
+    }
+    return e;
+}
 
 [[nodiscard]] inline Invalid validate(const Fog& f) {
     Invalid e = check_fields("fog", fog_fields, f);

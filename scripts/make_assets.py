@@ -16,13 +16,15 @@ the same bytes (--check exits 1 if a file would change). Scenes:
                         for the snowman and the fence, and a walker doing
                         laps round the snowman.
   village_effects.gltf  the village plus the spectral far-field layer, gusts,
-                        layered fog with a puff, and a wind field (with wind
-                        transport of snow) that the buildings shape.
+                        layered fog with a puff, a wind field (with wind
+                        transport of snow) that the buildings shape, and a
+                        low winter sun under a clear sky (lamps at half).
   minimal.gltf          ground and an emitter only: no wind, fog, occlusion or
                         spectral layer, default bounds.
   park.gltf             no declared surfaces at all: hilly terrain (a mesh), a
                         statue of spheres and boxes on a plinth, three benches,
-                        five cone trees, and a snow cover over everything.
+                        five cone trees, a snow cover over everything, and
+                        an afternoon sun (the trees' shadows on the snow).
 """
 
 import base64
@@ -280,9 +282,11 @@ def village(effects):
                     scale=[0.4, 1.8, 0.4],
                     snow={"collider": "capsule", "on_ground": True,
                           "motion": {"waypoints": lap, "speed": 1.2, "loop": True}})
-    lights = [point_light("white", (1.0, 1.0, 1.0), 1.0),
-              point_light("blue", (0.35, 0.5, 1.0), 0.6),
-              point_light("yellow", (1.0, 0.85, 0.35), 0.7)]
+    # By day, under the effects scene's sun, the lamps give half their light.
+    dim = 0.5 if effects else 1.0
+    lights = [point_light("white", (1.0, 1.0, 1.0), 1.0 * dim),
+              point_light("blue", (0.35, 0.5, 1.0), 0.6 * dim),
+              point_light("yellow", (1.0, 0.85, 0.35), 0.7 * dim)]
     lamps = [g.node("white light", translation=[-3.0, 9.0, -1.0], light=0),
              g.node("blue light", translation=[-1.0, 5.0, 7.0], light=1),
              g.node("yellow light", translation=[9.0, 5.0, 1.0], light=2)]
@@ -314,8 +318,14 @@ def village(effects):
     if effects:
         snow["spectral"] = {"size_xy": 64, "size_t": 32, "speed": 1.0, "band_low": 4.0,
                             "band_high": 16.0, "opacity": 0.5, "start_distance": 25.0}
+        # A low winter sun from the west, a little behind the buildings: their
+        # shadows reach across the snow towards the camera. On flat ground it
+        # gives 5 times the sky's light, as a clear day's sun at 30° does, and
+        # the clear sky is bluer than the overcast village's.
+        snow["sun"] = {"direction": [-0.7, 0.45, -0.3], "color": [1.0, 0.95, 0.86],
+                       "intensity": 4.0}
     snow["camera"] = CAMERA
-    snow["environment"] = ENVIRONMENT
+    snow["environment"] = dict(ENVIRONMENT, sky=[0.45, 0.58, 0.8]) if effects else ENVIRONMENT
     roots = [ground, house, porch] + posts + [garage, fence, snowman, walker] + lamps
     return g.document("village effects" if effects else "village", roots, snow, lights)
 
@@ -415,6 +425,9 @@ def park():
         "camera": {"position": [0.0, 6.0, 14.0], "target": [0.0, 1.0, 0.0], "fov_y_deg": 50.0,
                    "near_plane": 0.05, "far_plane": 200.0},
         "environment": ENVIRONMENT,
+        # A winter afternoon sun from the south-west: the pines' and the
+        # statue's shadows fall across the snow towards the camera's right.
+        "sun": {"direction": [-0.5, 0.55, -0.6], "color": [1.0, 0.95, 0.86], "intensity": 4.0},
     }
     return g.document("park", [ground, statue] + benches + trees, snow)
 

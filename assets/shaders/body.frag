@@ -6,9 +6,10 @@ out vec4 frag_color;
 uniform vec3 albedo;
 void main() {
     vec3 n = normalize(v_normal);
-    vec3 color = albedo * irradiance(n, v_world);
+    float shadow;
+    vec3 color = shade(albedo, 0.0, n, v_world, shadow);
 #ifdef FOG
     color = apply_fog(color, v_world);
 #endif
-    frag_color = vec4(color, 1.0);
+    frag_color = frame_output(color, 1.0, 0.0, shadow);
 }

@@ -1,6 +1,6 @@
 // common.glsl: prepended to every stage after "#version" and the variant
 // #defines (FOG + one of FOG_EXPONENTIAL / FOG_HALF_LIFE / FOG_LAYERED,
-// OCCLUSION). Mirrors render/gl/frame_block.hpp (std140).
+// OCCLUSION, SUN, SUN_SHADOWS). Mirrors render/gl/frame_block.hpp (std140).
 
 layout(std140) uniform Frame {
     mat4 view_proj;
@@ -17,9 +17,14 @@ layout(std140) uniform Frame {
     vec4 occlusion_shear; // xy: (shear_x, shear_z): p lies in the texel of p.xz + shear * p.y
     vec4 flake;        // x: min px, y: max px, z: base alpha, w: 1/fade distance
     vec4 light_params; // x: falloff k in 1/(1 + k d^2)
-    ivec4 counts;      // x: point lights, yz: occlusion map size
+    vec4 sun_color;    // rgb: a Sun's colour x intensity, w: exposure
+    vec4 view_forward; // xyz: the camera's forward axis
+    vec4 cascade_far;  // xyz: view depth where each shadow cascade ends
+    vec4 cascade_texel; // xyz: metres per shadow texel, w: 1 / texels of a cascade
+    ivec4 counts;      // x: point lights, yz: occlusion map size, w: output (0 colour, 1 snow, 2 shadow)
     vec4 light_pos[8]; // xyz, w: intensity
     vec4 light_color[8];
+    mat4 sun_atlas[3]; // world -> (u, v, depth) in the shadow atlas, per cascade
 };
 
 // Diffuse light arriving at p with normal n: ambient, the point lights
@@ -35,6 +40,101 @@ vec3 irradiance(vec3 n, vec3 p) {
         light += light_color[i].rgb * (light_pos[i].w * lambert / (1.0 + light_params.x * dist2));
     }
     return light;
+}
+
+#ifdef SUN
+#ifdef SUN_SHADOWS
+uniform sampler2DShadow sun_shadow_map; // the cascades side by side [CSM]
+// How much of the sun reaches p [WIL]: the cascade holding p's view depth
+// [PSSM], 3x3 taps of the hardware's 2x2-filtered compare [PCF]. p is pushed
+// out along n (normal offset [NOS]) by 1.5 texels, up to 4 where the sun
+// grazes the face, so lit faces (and coarse spheres' smooth normals near
+// their terminator) do not shadow themselves; taps stay inside the
+// cascade's third of the atlas.
+float sun_visibility(vec3 p, vec3 n) {
+    float depth = dot(p - camera_pos.xyz, view_forward.xyz);
+    int c = depth < cascade_far.x ? 0 : (depth < cascade_far.y ? 1 : 2);
+    if (depth >= cascade_far.z) {
+        return 1.0; // past the shadow distance: lit
+    }
+    float grazing = 1.0 - clamp(dot(n, sun.xyz), 0.0, 1.0);
+    vec4 s = sun_atlas[c] * vec4(p + n * ((1.5 + 2.5 * grazing) * cascade_texel[c]), 1.0);
+    vec2 texel = vec2(cascade_texel.w / 3.0, cascade_texel.w);
+    float lo = float(c) / 3.0 + 1.5 * texel.x;
+    float hi = float(c + 1) / 3.0 - 1.5 * texel.x;
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y) {
+        for (int x = -1; x <= 1; ++x) {
+            vec2 uv = s.xy + vec2(x, y) * texel;
+            sum += texture(sun_shadow_map, vec3(clamp(uv.x, lo, hi), uv.y, min(s.z, 1.0)));
+        }
+    }
+    return sum / 9.0;
+}
+#else
+float sun_visibility(vec3 p, vec3 n) { return 1.0; }
+#endif
+
+const float PI = 3.14159265;
+// Fresh snow reflects about 90 % of visible light [WAR]; snow_color tints it.
+const float snow_albedo = 0.9;
+const float snow_roughness = 0.6; // a rough, grainy surface
+const float snow_f0 = 0.02;       // ice's Fresnel reflectance at normal incidence (n = 1.31)
+// Snow scatters light under its surface past the terminator: wrapped
+// diffuse, max(0, (N.L + w) / (1 + w)) [GREEN].
+const float snow_wrap = 0.2;
+
+// GGX microfacet specular [GGX] with Smith-Schlick visibility (k = (r+1)^2/8)
+// and Schlick's Fresnel [KAR], times N.L: radiance per unit sun irradiance.
+float ggx_specular(vec3 n, vec3 v, vec3 l) {
+    vec3 h = normalize(v + l);
+    float nl = max(dot(n, l), 0.0), nv = max(dot(n, v), 1e-4);
+    float nh = max(dot(n, h), 0.0), vh = max(dot(v, h), 0.0);
+    float a2 = pow(snow_roughness, 4.0);
+    float d = nh * nh * (a2 - 1.0) + 1.0;
+    float k = (snow_roughness + 1.0) * (snow_roughness + 1.0) / 8.0;
+    float g = nv / (nv * (1.0 - k) + k) * nl / (nl * (1.0 - k) + k);
+    float f = snow_f0 + (1.0 - snow_f0) * pow(1.0 - vh, 5.0);
+    return a2 / (PI * d * d) * g * f / (4.0 * nv * max(nl, 1e-4)) * nl;
+}
+
+// The filmic curve of [ACES] (Narkowicz's fit) after the exposure: bright
+// sunlit snow rolls off towards white instead of clipping.
+vec3 filmic(vec3 x) {
+    x *= sun_color.w;
+    return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+#endif
+
+// A surface of colour `albedo`, covered by snow to the amount `snow`, at p
+// facing n. Without a sun: the diffuse irradiance of ambient, sky and lamps.
+// With one: the same ambient and lamps (the sky-coloured hemisphere turns
+// shade blue), the sun's wrapped diffuse and GGX specular for the snow,
+// both held back by its shadow, under the filmic curve. `shadow`: the share
+// of the sun the shadow maps hold back (0 without a sun).
+vec3 shade(vec3 albedo, float snow, vec3 n, vec3 p, out float shadow) {
+#ifdef SUN
+    vec3 l = sun.xyz;
+    float visible = sun_visibility(p, n);
+    shadow = 1.0 - visible;
+    vec3 base = mix(albedo, snow_color.rgb * snow_albedo, snow);
+    float w = snow_wrap * snow;
+    float diffuse = max((dot(n, l) + w) / (1.0 + w), 0.0);
+    float specular = snow * ggx_specular(n, normalize(camera_pos.xyz - p), l);
+    vec3 radiance = base * (irradiance(n, p) + sun_color.rgb * diffuse * visible) +
+                    sun_color.rgb * specular * visible;
+    return filmic(radiance);
+#else
+    shadow = 0.0;
+    return mix(albedo, snow_color.rgb, snow) * irradiance(n, p);
+#endif
+}
+
+// What a surface's fragment writes: its colour, or one of the masks
+// (RenderOutput) as grey, with the same alpha so that blended snow masks too.
+vec4 frame_output(vec3 color, float alpha, float snow, float shadow) {
+    vec3 value = counts.w == 1 ? vec3(snow) : (counts.w == 2 ? vec3(shadow) : color);
+    return vec4(value, alpha);
 }
 
 #ifdef FOG

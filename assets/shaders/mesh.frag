@@ -40,9 +40,10 @@ void main() {
     vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
     float incline = clamp(n.y, 0.0, 1.0); // [SKY step 3]
     float cover = incline * sky_exposure(v_world, n) * snow_color.w;
-    vec3 color = mix(albedo, snow_color.rgb, cover) * irradiance(n, v_world);
+    float shadow;
+    vec3 color = shade(albedo, cover, n, v_world, shadow);
 #ifdef FOG
     color = apply_fog(color, v_world);
 #endif
-    frag_color = vec4(color, 1.0);
+    frag_color = frame_output(color, 1.0, cover, shadow);
 }

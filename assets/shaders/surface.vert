@@ -14,6 +14,10 @@ uniform vec3 surface_place;           // x0, z0, cell edge (m)
 // how much it hides the scene below it, as in the mesh shading [SKY].
 out vec4 v_color;
 out float v_depth; // snow depth (m), faded out per fragment as it thins to nothing
+#ifdef SUN
+out vec3 v_world; // shaded per fragment (surface.frag)
+out vec3 v_normal;
+#endif
 
 // A bare top rising faster than this between two samples is an edge (eaves, a
 // box's rim, a sphere's side), not a slope: normals and the seam skirts' depth
@@ -110,9 +114,16 @@ void main() {
     }
     vec3 world = vec3(surface_place.x + p.x * surface_place.z, y,
                       surface_place.y + p.y * surface_place.z);
-    vec3 color = snow_color.rgb * irradiance(normal, world);
+#ifdef SUN
+    v_world = world;
+    v_normal = normal;
+    vec3 color = vec3(0.0);
+#else
+    float shadow;
+    vec3 color = shade(vec3(0.0), 1.0, normal, world, shadow);
 #ifdef FOG
     color = apply_fog(color, world);
+#endif
 #endif
     v_color = vec4(color, clamp(n.y, 0.0, 1.0));
     v_depth = h.r - h.g;

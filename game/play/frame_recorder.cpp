@@ -26,6 +26,13 @@ void FrameRecorder::write(const Image& frame) {
     ++frames_;
 }
 
+void FrameRecorder::write_beside(const Image& image, std::string_view suffix) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05llu_",
+                  static_cast<unsigned long long>(frames_ == 0 ? 0 : frames_ - 1));
+    write_png_file(std::filesystem::path(dir_) / (name + std::string(suffix) + ".png"), image);
+}
+
 std::optional<std::string> FrameRecorder::encode_video() const {
     if (frames_ == 0 || std::system("command -v ffmpeg >/dev/null 2>&1") != 0) {
         return std::nullopt;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace snow {
 
@@ -24,6 +25,9 @@ class FrameRecorder {
 
     /// Writes the next numbered frame; throws FileWriteError naming the file on failure.
     void write(const Image& frame);
+    /// Writes `image` beside the last frame written, as frame_<n>_<suffix>.png
+    /// (an AOV of that frame); throws FileWriteError like write().
+    void write_beside(const Image& image, std::string_view suffix);
     [[nodiscard]] std::uint64_t frames() const { return frames_; }
     [[nodiscard]] const std::string& dir() const { return dir_; }
     /// Encodes the frames written so far into <dir>/snow.mp4 (30 frames/s) if

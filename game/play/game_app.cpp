@@ -124,6 +124,16 @@ int play(GameOptions opt) {
             context->swap_buffers();
         } else {
             recording->add(renderer->read_pixels(), *session, frame);
+            if (opt.aov) {
+                // The same moment again as each mask (the renderer only reads the world).
+                for (const auto& [output, suffix] : aov_masks) {
+                    renderer->settings().output = output;
+                    renderer->render(session->sim(), session->visuals(),
+                                     session->camera().camera());
+                    recording->add_mask(renderer->read_pixels(), suffix);
+                }
+                renderer->settings().output = RenderOutput::color;
+            }
             if (opt.frames > 0 && (frame + 1) % 30 == 0) {
                 std::fputs(progress_line(*session, frame, opt.frames, renderer->timings().frame_ms)
                                .c_str(),

@@ -28,6 +28,9 @@ constexpr const char* game_usage_head = R"(usage: snow_game [options]
   --walk-once-at F    the player takes the scene walker's place: it waits at its
                       path's start until frame F, then walks the path once
   --bare-meshes       meshes keep their colour: only the simulated snow is white
+  --aov               headless: beside each frame_N.png also frame_N_snow.png (white
+                      where snow covers the pixel) and frame_N_shadow.png (white
+                      where the sun's shadow falls; black without a sun)
   --min-snow-depth M  snow thinner than M metres fades to the bare top (default 0.002)
   --look-from X,Y,Z   the camera's start position (default: the scene's camera)
   --look-at X,Y,Z     the point it looks at (default: the scene's camera)
@@ -102,6 +105,8 @@ bool read_flag(std::string_view f, cli::ArgReader& args, GameOptions& o) {
         o.snowfall = static_cast<float>(parse_positive(f, args.value(), max_snowfall_kg_m2_h));
     } else if (f == "--walk-once-at") {
         o.walk_once_at = parse_uint(f, args.value(), 0, 10'000'000);
+    } else if (f == "--aov") {
+        o.aov = true;
     } else if (f == "--bare-meshes") {
         o.bare_meshes = true;
     } else if (f == "--min-snow-depth") {
@@ -129,6 +134,9 @@ GameOptions parse_game_options(int argc, char** argv) {
     cli::read_command_line(
         argc, argv, {o.scene, o.overrides, o.help},
         [&](std::string_view f, cli::ArgReader& args) { return read_flag(f, args, o); });
+    if (o.aov && !o.headless && !o.help) {
+        throw cli::UsageError{"--aov: needs --headless (the masks go beside the PNG frames)"};
+    }
     return o;
 }
 

@@ -38,7 +38,8 @@ struct GameOptions {
     /// a path): it stands at the path's start until this frame, then walks
     /// the path once and stops (a trail cut once, in the player's tread).
     std::optional<std::uint64_t> walk_once_at;
-    bool bare_meshes = false;            ///< meshes keep their colour: only simulated snow is white
+    bool bare_meshes = false; ///< meshes keep their colour: only simulated snow is white
+    bool aov = false;         ///< headless: each frame's snow and sun-shadow masks beside it
     std::optional<float> min_snow_depth; ///< renderer: thinner snow shows the bare top (m)
     std::optional<glm::vec3> look_from;  ///< replaces the scene camera's position
     std::optional<glm::vec3> look_at;    ///< replaces the scene camera's target

@@ -21,6 +21,10 @@ void HeadlessRecording::add(const Image& image, const GameSession& session, std:
     }
 }
 
+void HeadlessRecording::add_mask(const Image& mask, std::string_view suffix) {
+    recorder_.write_beside(mask, suffix);
+}
+
 std::string HeadlessRecording::finish() const {
     std::string said = "snow_game: wrote " + std::to_string(recorder_.frames()) + " frames to " +
                        std::filesystem::absolute(recorder_.dir()).string() + "\n";

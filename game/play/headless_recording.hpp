@@ -14,8 +14,16 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace snow {
+
+/// The masks --aov writes beside each frame, and the suffixes of their files.
+inline constexpr std::pair<RenderOutput, std::string_view> aov_masks[] = {
+    {RenderOutput::snow_mask, "snow"},
+    {RenderOutput::shadow_mask, "shadow"},
+};
 
 class HeadlessRecording {
   public:
@@ -26,6 +34,8 @@ class HeadlessRecording {
     /// Writes frame `frame` (from 0); keeps it on the sheet, labelled with
     /// the session's moment, when it is one of the sheet's moments.
     void add(const Image& image, const GameSession& session, std::uint64_t frame);
+    /// Writes a mask of the frame added last beside it (frame_<n>_<suffix>.png).
+    void add_mask(const Image& mask, std::string_view suffix);
     /// Writes the contact sheet and encodes the video; says what it wrote where.
     [[nodiscard]] std::string finish() const;
 

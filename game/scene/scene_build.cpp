@@ -328,6 +328,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
     visuals.environment = s.environment;
     visuals.fog = s.fog; // render-only, validated with the schema
     visuals.spectral = s.spectral;
+    visuals.sun = s.sun;
     return sim;
 }
 

@@ -173,6 +173,8 @@ constexpr Schema<OcclusionCamera> occlusion_schema{occlusion_fields};
 
 constexpr Schema<SpectralSnow> spectral_schema{spectral_fields};
 
+constexpr Schema<Sun> sun_schema{sun_fields};
+
 /// `[x, z]` of a cover corner.
 template <float CoverDef::*X, float CoverDef::*Z>
 void read_corner(const Json& j, const std::string& field, CoverDef& c) {
@@ -215,6 +217,7 @@ constexpr Field<SceneSnow> scene_snow_fields[] = {
     {"fog", &read_nested<&SceneSnow::fog, fog_schema, reject>},
     {"occlusion", &read_nested<&SceneSnow::occlusion, occlusion_schema, reject>},
     {"spectral", &read_nested<&SceneSnow::spectral, spectral_schema, reject>},
+    {"sun", &read_nested<&SceneSnow::sun, sun_schema, reject>},
     {"cover", &read_nested<&SceneSnow::cover, cover_schema, reject>},
     {"camera",
      +[](const Json& j, const std::string& field, SceneSnow& s) {
@@ -241,7 +244,7 @@ constexpr Field<AssetSnow> asset_snow_fields[] = {
 };
 
 /// Reads one scene's `extras.snow` and checks its effects with the
-/// simulation's (and, for fog and spectral snow, the renderer's) validate()
+/// simulation's (and, for fog, spectral snow and the sun, the renderer's) validate()
 /// functions.
 SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     const SceneSnow s = read_struct(j, path, scene_snow_fields, reject);
@@ -266,6 +269,9 @@ SceneSnow read_scene_snow(const Json& j, const std::string& path) {
     }
     if (s.spectral) {
         check_valid(validate(*s.spectral), path);
+    }
+    if (s.sun) {
+        check_valid(validate(*s.sun), path);
     }
     return s;
 }

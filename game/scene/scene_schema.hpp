@@ -46,6 +46,7 @@ struct SceneSnow {
     std::optional<Fog> fog;
     std::optional<OcclusionCamera> occlusion;
     std::optional<SpectralSnow> spectral;
+    std::optional<Sun> sun;
     std::optional<CoverDef> cover;
     std::optional<CameraDef> camera; ///< absent: the default view, or one framing auto snow
     Environment environment;

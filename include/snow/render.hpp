@@ -81,6 +81,15 @@ struct PointLight {
     float intensity = 1.0f;
 };
 
+/// A directional light far away (the sun): parallel rays, one colour. With a
+/// Sun the renderer draws cascaded shadow maps from it and shades snow as a
+/// rough, bright material under a filmic tone curve (docs/rendering.md#the-sun).
+struct Sun {
+    glm::vec3 direction{0.5f, 0.6f, 0.35f}; ///< towards the sun (any length > 0)
+    glm::vec3 color{1.0f, 0.95f, 0.86f};    ///< a low winter sun is a little warm
+    float intensity = 2.0f;                 ///< irradiance on a face turned to it
+};
+
 /// The view the scene starts with.
 struct CameraDef {
     glm::vec3 position{0.0f, 4.0f, 14.0f};
@@ -103,6 +112,7 @@ struct SceneVisuals {
     Environment environment;
     std::optional<Fog> fog;               ///< render-only: the simulation never sees it
     std::optional<SpectralSnow> spectral; ///< render-only
+    std::optional<Sun> sun;               ///< render-only: no sun, no shadow pass
 };
 
 // -- the view --
@@ -231,6 +241,15 @@ enum class FlakeLod : std::uint8_t {
     never,
 };
 
+/// What a frame writes: the image, or one of its masks (AOVs) of the same
+/// size, white where the pixel shows snow / lies in the sun's shadow. A mask
+/// frame draws only the opaque surfaces (meshes, bodies, snow) on black.
+enum class RenderOutput : std::uint8_t {
+    color,
+    snow_mask,   ///< how much of the pixel is snow cover (0..1)
+    shadow_mask, ///< how much of the sun the shadow maps hold back there (0..1)
+};
+
 struct RenderSettings {
     glm::vec3 snow_color{0.94f, 0.96f, 1.0f};
     /// How white exposed, sky-facing meshes get, 0..1 ([SKY] snow blend).
@@ -260,6 +279,17 @@ struct RenderSettings {
     /// Beyond this distance (m) only a fraction (lod_distance / d)² of flakes is drawn.
     float lod_distance = 12.0f;
 
+    /// With a SceneVisuals::sun: draw its cascaded shadow maps (off: lit everywhere).
+    bool sun_shadows = true;
+    /// Sun shadows reach this far from the eye (m, capped at the far plane) ...
+    float shadow_distance = 50.0f;
+    /// ... in three cascades of this many texels square each (16 to 2048).
+    int shadow_map_size = 1024;
+    /// With a sun: scales the exposure the sun sets (flat snow in full sun at
+    /// about 220 of 255) before the filmic tone curve.
+    float exposure = 1.0f;
+    RenderOutput output = RenderOutput::color;
+
     /// Draw the world's wind field (if it has one) as arrows coloured by speed.
     bool show_wind_field = false;
 
@@ -287,6 +317,8 @@ struct FrameTimings {
 };
 
 /// Create, use and destroy it with `context` current. Passes, in order:
+///   ("sun_shadows": the sun's cascaded shadow maps, first, from the first
+///    frame with SceneVisuals::sun, run while RenderSettings::sun_shadows)
 ///   "sky"           fogged sky (only with SceneVisuals::fog; else the clear colour)
 ///   "meshes"        SceneVisuals::meshes, lit, snow-white where exposed [SKY]
 ///   (moving bodies at this tick's pose: "bodies", inserted before

@@ -1,5 +1,6 @@
 /// @file gl_objects.hpp
-/// @brief Move-only owners of GL names (buffers, vertex arrays, textures).
+/// @brief Move-only owners of GL names (buffers, vertex arrays, textures,
+/// framebuffers).
 /// Internal to snow_render: includes the glad loader header.
 #pragma once
 
@@ -52,10 +53,17 @@ inline void gen_textures(GLsizei n, GLuint* ids) {
 inline void delete_textures(GLsizei n, const GLuint* ids) {
     glDeleteTextures(n, ids);
 }
+inline void gen_framebuffers(GLsizei n, GLuint* ids) {
+    glGenFramebuffers(n, ids);
+}
+inline void delete_framebuffers(GLsizei n, const GLuint* ids) {
+    glDeleteFramebuffers(n, ids);
+}
 } // namespace gl_detail
 
 using GlBuffer = GlName<gl_detail::gen_buffers, gl_detail::delete_buffers>;
 using GlVertexArray = GlName<gl_detail::gen_vertex_arrays, gl_detail::delete_vertex_arrays>;
 using GlTexture = GlName<gl_detail::gen_textures, gl_detail::delete_textures>;
+using GlFramebuffer = GlName<gl_detail::gen_framebuffers, gl_detail::delete_framebuffers>;
 
 } // namespace snow

@@ -129,6 +129,9 @@ Program& ProgramCache::get(std::string_view vertex_file, std::string_view fragme
     if (const int loc = program.uniform("fog_table"); loc >= 0) {
         glUniform1i(loc, texture_unit::fog_table);
     }
+    if (const int loc = program.uniform("sun_shadow_map"); loc >= 0) {
+        glUniform1i(loc, texture_unit::sun_shadow);
+    }
     return programs_.emplace(std::move(key), std::move(program)).first->second;
 }
 

@@ -57,6 +57,9 @@ class ProgramCache {
 namespace texture_unit {
 inline constexpr int occlusion = 0; ///< sampler2D occlusion_map: sky top_y [SKY]
 inline constexpr int fog_table = 1; ///< sampler1D fog_table: layered fog E(y) [PE]
+/// sampler2DShadow sun_shadow_map: the sun's cascades side by side [CSM]; 2–4
+/// are the effect passes' and the snow surfaces' own.
+inline constexpr int sun_shadow = 5;
 } // namespace texture_unit
 
 /// Binding point of the "Frame" uniform block.

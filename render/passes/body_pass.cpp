@@ -112,7 +112,9 @@ bool BodyPass::wanted(const World& world, const SceneVisuals&) const {
 }
 
 void BodyPass::run(const World& world, FrameContext& frame) {
-    const Program& program = frame.programs.get("body.vert", "body.frag", frame.fog_defines);
+    const Program& program = frame.depth_only
+                                 ? frame.programs.get("body.vert", "depth.frag", {})
+                                 : frame.programs.get("body.vert", "body.frag", lit_defines(frame));
     program.use();
     const int center = program.uniform("center"), scale = program.uniform("scale");
     const int half_height = program.uniform("half_height"), albedo = program.uniform("albedo");

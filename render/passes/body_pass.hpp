@@ -17,6 +17,8 @@ class BodyPass final : public RenderPass {
     [[nodiscard]] std::string_view name() const override { return pass_name; }
     [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
+    [[nodiscard]] bool casts_shadows() const override { return true; }
+    [[nodiscard]] bool in_masks() const override { return true; }
 
   private:
     /// A unit shape on the GPU: position, normal and hemisphere side per vertex.

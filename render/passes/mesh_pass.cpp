@@ -92,11 +92,13 @@ void MeshPass::upload(const MeshRenderable& mesh, GpuMesh& gpu) {
 
 void MeshPass::run(const World&, FrameContext& frame) {
     ++frame_;
-    std::vector<std::string> defines = frame.fog_defines;
+    std::vector<std::string> defines = lit_defines(frame);
     if (frame.occlusion) {
         defines.emplace_back("OCCLUSION");
     }
-    const Program& program = frame.programs.get("mesh.vert", "mesh.frag", defines);
+    const Program& program = frame.depth_only
+                                 ? frame.programs.get("mesh.vert", "depth.frag", {})
+                                 : frame.programs.get("mesh.vert", "mesh.frag", defines);
     program.use();
     const int albedo = program.uniform("albedo");
     for (std::size_t m = 0; m < frame.visuals.meshes.size(); ++m) {

@@ -16,6 +16,8 @@ class MeshPass final : public RenderPass {
     [[nodiscard]] std::string_view name() const override { return "meshes"; }
     [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
+    [[nodiscard]] bool casts_shadows() const override { return true; }
+    [[nodiscard]] bool in_masks() const override { return true; }
 
   private:
     struct GpuMesh {

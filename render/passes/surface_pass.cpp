@@ -118,7 +118,7 @@ void SurfacePass::draw(GpuSurface& gpu, const SnowSurface& s, FrameContext& fram
     glBufferData(GL_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(instance_staging_.size() * sizeof(glm::ivec2)),
                  instance_staging_.data(), GL_STREAM_DRAW);
-    const Program& program = frame.programs.get("surface.vert", "surface.frag", frame.fog_defines);
+    const Program& program = frame.programs.get("surface.vert", "surface.frag", lit_defines(frame));
     program.use();
     glUniform1f(program.uniform("min_depth"), frame.settings.min_snow_depth);
     glUniform1i(program.uniform("surface_cells"), surface_cells_unit);

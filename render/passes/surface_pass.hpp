@@ -25,6 +25,7 @@ class SurfacePass final : public RenderPass {
     [[nodiscard]] std::string_view name() const override { return "snow_surfaces"; }
     [[nodiscard]] bool wanted(const World& world, const SceneVisuals& visuals) const override;
     void run(const World& world, FrameContext& frame) override;
+    [[nodiscard]] bool in_masks() const override { return true; }
 
   private:
     /// The index list of a tile with edges, for the level and skirts it was

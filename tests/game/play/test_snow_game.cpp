@@ -37,6 +37,38 @@ TEST(SnowGame, HeadlessWritesFramesAndSaysWhere) {
     EXPECT_NE(r.out.find("wrote 3 frames to"), std::string::npos) << r.out;
 }
 
+TEST(SnowGame, AovWritesSnowAndShadowMasksBesideEachFrame) {
+    const std::filesystem::path dir =
+        std::filesystem::path(SNOW_BINARY_DIR) / "test_out" / "game_aov";
+    std::filesystem::remove_all(dir);
+    const snow::test::AppRun r =
+        run_game("MESA_SHADER_CACHE_DISABLE=true",
+                 "--headless --frames 2 --size 160x120 --aov --scene " SNOW_SOURCE_DIR
+                 "/assets/scenes/village_effects.gltf --out " +
+                     dir.string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    for (const char* f : {"frame_00001.png", "frame_00001_snow.png", "frame_00001_shadow.png"}) {
+        ASSERT_TRUE(std::filesystem::exists(dir / f)) << f;
+        const snow::Image image = snow::read_png(dir / f);
+        EXPECT_EQ(image.width, 160) << f;
+        EXPECT_EQ(image.height, 120) << f;
+    }
+    // Snow lies in view, and so do the buildings' shadows from the scene's sun.
+    for (const char* f : {"frame_00001_snow.png", "frame_00001_shadow.png"}) {
+        const snow::Image mask = snow::read_png(dir / f);
+        std::size_t white = 0;
+        for (std::size_t i = 0; i < mask.rgba.size(); i += 4) {
+            white += mask.rgba[i] >= 128 ? 1u : 0u;
+        }
+        EXPECT_GT(white, 160u * 120u / 50u) << f;
+    }
+    const snow::test::AppRun windowed =
+        run_game("MESA_SHADER_CACHE_DISABLE=true", "--aov --frames 1");
+    EXPECT_EQ(windowed.status, 2) << windowed.out;
+    EXPECT_NE(windowed.out.find("--aov: needs --headless"), std::string::npos) << windowed.out;
+    EXPECT_EQ(std::count(windowed.out.begin(), windowed.out.end(), '\n'), 1) << windowed.out;
+}
+
 /// snow_game in a window on a private Xvfb server; nothing when Xvfb is not installed.
 std::optional<snow::test::AppRun> run_game_in_xvfb(const std::string& args) {
     const auto xvfb_binary = snow::test::Xvfb::find();

@@ -49,10 +49,12 @@ TEST(RenderEffectsScene, VillageWithoutEffectsRunsOnlyTheBuiltInPasses) {
 
 TEST(RenderGolden, VillageEffectsScene) {
     // Four seconds of snowfall: particles near the camera, the spectral layer
-    // over the sky beyond them, the layered fog low over the ground and a puff.
+    // over the sky beyond them, the layered fog low over the ground and a
+    // puff, and the low sun's shadows across the snow.
     const Frame f = render_scene("village_effects.gltf", 240);
-    const std::vector<std::string> passes = {"sky",           "meshes", "bodies",   "snow_surfaces",
-                                             "spectral_snow", "flakes", "fog_puffs"};
+    const std::vector<std::string> passes = {"sun_shadows", "sky",           "meshes",
+                                             "bodies",      "snow_surfaces", "spectral_snow",
+                                             "flakes",      "fog_puffs"};
     EXPECT_EQ(f.passes, passes);
     EXPECT_TRUE(matches_golden(f.image, "village_effects"));
 }

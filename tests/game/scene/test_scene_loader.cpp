@@ -423,6 +423,14 @@ TEST(SceneLoaderErrors, SceneSettingsNameTheirField) {
                  {"extensions.KHR_lights_punctual.lights[0].type must be \"point\""});
     expect_error(load_text(replaced(village, "\"light\": 2", "\"light\": 3")),
                  {"KHR_lights_punctual.light must be in [0, 2] (got 3)"});
+    const std::string sunny = read_text(asset_path("village_effects.gltf"));
+    expect_error(
+        load_text(replaced(sunny, "\"direction\": [-0.7, 0.45, -0.3]", "\"direction\": [0, 0, 0]")),
+        {"scenes[0].extras.snow.sun.direction must be of length > 0 (got 0)"});
+    expect_error(load_text(replaced(sunny, "\"intensity\": 4.0", "\"intensity\": -1")),
+                 {"scenes[0].extras.snow.sun.intensity must be >= 0"});
+    expect_error(load_text(replaced(sunny, "\"intensity\": 4.0", "\"elevation\": 30")),
+                 {"scenes[0].extras.snow.sun has an unknown field 'elevation'"});
 }
 
 TEST(SceneLoaderErrors, BrokenGraphsAndPrimitives) {

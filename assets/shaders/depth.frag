@@ -1,0 +1,2 @@
+// depth.frag: shadow casters drawn into the sun's cascades write depth only.
+void main() {}
