@@ -46,8 +46,9 @@ seconds=$(( $(date +%s) - start ))
     echo "the row). The table is where issue #30 stands. Not in band yet: the"
     echo "roof at 40°, which one friction and one adhesion cannot hold to the code's"
     echo "gradual decline (docs/cover_and_bodies.md, roofs that slide). Not yet"
-    echo "probed: drifts behind a fence and round a cube (Tabler, Oikawa), and the"
-    echo "convergence of the quantities other than the transport's flux."
+    echo "probed: drifts behind a fence and round a cube (Tabler, Oikawa); convergence"
+    echo "rows cover the flux (cells, depth, tick, field cells), the fall speed (tick),"
+    echo "the roof loads (cells) and the pile flanks (5 and 10 cm cells)."
     echo
     cat "$table"
 } >"$target"

@@ -101,8 +101,18 @@ std::vector<Row> roof_load_by_pitch(const Plan&) {
         rows.push_back(
             {"roof / ground load, pitch " + number("%.0f", p.degrees) + "°",
              std::string("μ1 = ") + p.code + " [EN1991]",
-             "plane roof, still-air snowfall to 1 kN/m² on the ground, loads averaged over it",
+             "plane roof, 10 cm cells, still-air snowfall to 1 kN/m² on the ground, loads "
+             "averaged over it",
              roof_over_ground(p.degrees), "", p.low, p.high});
+    }
+    // Convergence (issue #30 item 8): the roofs that keep part of their snow,
+    // on cells of half the side.
+    for (const double degrees : {45.0, 60.0}) {
+        rows.push_back(
+            {"roof / ground load, pitch " + number("%.0f", degrees) + "°, 5 cm cells / 10 cm",
+             "the same: what a roof keeps is its pitch's, not its grid's",
+             "the roof above on cells of half the side",
+             roof_over_ground(degrees, {}, 0.05f) / roof_over_ground(degrees), "", 0.9, 1.1});
     }
     return rows;
 }

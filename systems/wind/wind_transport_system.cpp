@@ -73,20 +73,29 @@ struct Step {
 
 /// Index meaning "across the edge": the units leave as clumps.
 constexpr std::size_t off_surface = static_cast<std::size_t>(-1);
+/// Index meaning "against a wall": the edge is closed by a base that stands
+/// above the snow (a cover's step up onto a solid); the units stay.
+constexpr std::size_t wall = off_surface - 1;
 
-/// The cell downwind of (ix, iz) by (dx, dz) (one of them 0), or off_surface
-/// when the snow cannot stay on the surface that way: off the grid, across a
-/// closed edge (a drop), or onto a void column.
+/// The cell downwind of (ix, iz) by (dx, dz) (one of them 0), `wall`, or
+/// off_surface when the snow cannot stay on the surface that way: off the
+/// grid, across a closed edge down (a drop), or onto a void column.
 std::size_t downwind(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, int dx, int dz) {
     const std::uint8_t shut = s.closed.empty() ? 0 : s.closed[s.index(ix, iz)];
     const std::uint8_t bit = dx < 0 ? 1u : dx > 0 ? 2u : dz < 0 ? 4u : 8u;
     const bool on_grid = (dx >= 0 || ix > 0) && (dx <= 0 || ix + 1 < s.nx) && (dz >= 0 || iz > 0) &&
                          (dz <= 0 || iz + 1 < s.nz);
-    if (!on_grid || (shut & bit) != 0) {
+    if (!on_grid) {
         return off_surface;
     }
     const std::size_t j = s.index(ix + dx, iz + dz);
-    return s.is_void(j) ? off_surface : j;
+    if (s.is_void(j)) {
+        return off_surface;
+    }
+    if ((shut & bit) != 0) {
+        return s.base_level[j] > s.level(s.index(ix, iz)) ? wall : off_surface;
+    }
+    return j;
 }
 
 /// Horizontal wind at `height` above the snow top of cell (ix, iz).
@@ -172,8 +181,8 @@ std::uint32_t lay(SnowSurface& s, const Step& st, std::size_t i, int dx, int dz,
 
 /// The flux's step through cell (ix, iz) along (dx, dz): `carry` arrives
 /// from upwind; returns what leaves across the downwind face (0 where that
-/// face leads off the surface: those units left as clumps, or, on a surface
-/// that never spills, stayed).
+/// face leads off the surface: those units left as clumps, or, against a
+/// wall or on a surface that never spills, stayed).
 std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& scratch,
                         FlakePool& pool, std::uint32_t ix, std::uint32_t iz, int dx, int dz,
                         std::uint32_t carry) {
@@ -183,7 +192,7 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
     }
     const std::size_t next = downwind(s, ix, iz, dx, dz);
     std::uint32_t out = 0;
-    if (next != off_surface || s.spills) {
+    if (next < wall || (next == off_surface && s.spills)) {
         const std::uint32_t capacity = face_units(s, st, scratch, ix, iz, dx != 0, dx + dz);
         const std::uint32_t taken = std::min(capacity - std::min(capacity, carry), s.snow[i]);
         if (taken != 0) {
@@ -195,7 +204,8 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
         const std::uint32_t through = std::min(carry, capacity);
         out = through + taken + lay(s, st, i, dx, dz, carry - through);
     } else {
-        out = lay(s, st, i, dx, dz, carry); // a closed end: only a full cell lets units on
+        // Against a wall or a closed end: only a full cell lets units on.
+        out = lay(s, st, i, dx, dz, carry);
     }
     if (out == 0 || next != off_surface) {
         return out;

@@ -20,7 +20,7 @@ double load(const SnowGrid& g) {
 
 } // namespace
 
-double roof_over_ground(double pitch_deg, const SurfaceDef& roof_settings) {
+double roof_over_ground(double pitch_deg, const SurfaceDef& roof_settings, float cell) {
     SimConfig config;
     config.bounds = {{-4.0f, 0.0f, -2.0f}, {4.0f, 8.0f, 2.0f}};
     Simulation sim(config);
@@ -28,7 +28,7 @@ double roof_over_ground(double pitch_deg, const SurfaceDef& roof_settings) {
     ground.x0 = 1.0f;
     ground.z0 = -1.0f;
     ground.size_x = ground.size_z = 2.0f;
-    ground.cell = 0.1f;
+    ground.cell = cell;
     ground.spills = false;
     const SurfaceId g = sim.add_surface(ground);
     SurfaceDef roof = roof_settings;

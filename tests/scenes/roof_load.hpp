@@ -17,6 +17,8 @@ inline constexpr double design_ground_load = 1000.0 / 9.81;
 /// gives its friction, adhesion and repose) in 100 steps 3 ticks apart, and
 /// the ratio is that of the two loads summed over the steps. The roof's eaves
 /// hold any depth (a large edge_limit): only sliding and rolling shed it.
-[[nodiscard]] double roof_over_ground(double pitch_deg, const SurfaceDef& roof = SurfaceDef{});
+/// Both grids have cells of `cell` metres.
+[[nodiscard]] double roof_over_ground(double pitch_deg, const SurfaceDef& roof = SurfaceDef{},
+                                      float cell = 0.1f);
 
 } // namespace snow

@@ -25,9 +25,11 @@ Emitter emitter(float rate, float snowfall_kg_m2_h) {
     return e;
 }
 
-/// The still-air box with one emitter.
-std::unique_ptr<Simulation> snowing(const Emitter& e) {
-    auto sim = std::make_unique<Simulation>(test::box_world(200000));
+/// The still-air box with one emitter, ticking every `dt` seconds.
+std::unique_ptr<Simulation> snowing(const Emitter& e, float dt = SimConfig{}.dt) {
+    SimConfig c = test::box_world(200000);
+    c.dt = dt;
+    auto sim = std::make_unique<Simulation>(c);
     sim->add_emitter(e);
     return sim;
 }
@@ -70,18 +72,23 @@ TEST(Snowfall, SpawnedMassIsTheDeclaredSnowfall) {
 
 TEST(Snowfall, TerminalSpeedEmergesFromDragAndGrowsWithSize) {
     const Emitter e = emitter(6000.0f, Emitter{}.snowfall_kg_m2_h);
-    const auto sim = snowing(e);
-    sim->run(120); // born at terminal speed, still falling at it 2 s later
-    const FlakePool& f = flake_pool(*sim);
-    std::uint32_t checked = 0;
-    for (std::uint32_t i = 0; i < f.slot_end; ++i) {
-        if (!f.is_alive(i)) {
-            continue;
+    // Born at terminal speed, still falling at it 2 s later, at the default
+    // tick and at half of it (issue #30 item 8).
+    for (const float dt : {SimConfig{}.dt, SimConfig{}.dt / 2.0f}) {
+        SCOPED_TRACE(dt);
+        const auto sim = snowing(e, dt);
+        sim->run(static_cast<std::uint64_t>(std::lround(2.0f / dt)));
+        const FlakePool& f = flake_pool(*sim);
+        std::uint32_t checked = 0;
+        for (std::uint32_t i = 0; i < f.slot_end; ++i) {
+            if (!f.is_alive(i)) {
+                continue;
+            }
+            EXPECT_NEAR(-f.vy[i], fall_speed(e.crystal, f.size[i]), 1e-3f) << "slot " << i;
+            ++checked;
         }
-        EXPECT_NEAR(-f.vy[i], fall_speed(e.crystal, f.size[i]), 1e-3f) << "slot " << i;
-        ++checked;
+        EXPECT_GT(checked, 1000u);
     }
-    EXPECT_GT(checked, 1000u);
     // Bigger flakes fall faster: 10 mm over 2 mm is 5^0.16 [LH74].
     EXPECT_NEAR(fall_speed(e.crystal, 0.01f) / fall_speed(e.crystal, 0.002f), std::pow(5.0, 0.16),
                 1e-5);

@@ -183,5 +183,13 @@ TEST(Slide, RoofKeepsLessSnowAsItsPitchGrowsLikeTheCodeEnvelope) {
     }
 }
 
+TEST(Slide, WhatARoofKeepsDoesNotDependOnItsCells) {
+    // Issue #30 item 8: within 10% on cells of half the side.
+    for (const double pitch : {45.0, 60.0}) {
+        SCOPED_TRACE(pitch);
+        EXPECT_NEAR(roof_over_ground(pitch, {}, 0.05f) / roof_over_ground(pitch), 1.0, 0.1);
+    }
+}
+
 } // namespace
 } // namespace snow
