@@ -128,16 +128,18 @@ int main(int argc, char**) {
     }
     // wind_transport (systems/wind/saltation.hpp): the log law's ln(z/z0) of
     // a read height and a roughness, and the threshold of a cell's density
-    // (e^x, fresh snow up to max_packing times the densest fresh snow).
+    // (e^x, fresh snow up to max_packing times the densest).
     {
-        Digest d;
+        Digest law, threshold;
         Draws r{7};
         for (std::uint32_t i = 0; i < pairs; ++i) {
-            d.add(snow::friction_per_wind(r.uniform_float(1.0e-3f, 100.0f),
-                                          r.uniform_float(1.0e-6f, 1.0e-3f)));
-            d.add(snow::threshold_friction_velocity(r.uniform(40.0, 480.0)));
+            const float z = r.uniform_float(1.0e-3f, 100.0f); // drawn in this order
+            const float z0 = r.uniform_float(1.0e-6f, 1.0e-3f);
+            law.add(snow::friction_per_wind(z, z0));
+            threshold.add(snow::threshold_friction_velocity(r.uniform(40.0, 480.0)));
         }
-        print("transport", d);
+        print("log_law", law);
+        print("threshold", threshold);
     }
     // integrate (exponential rule): e^(−c·dt), c·dt >= 0, down to 0.
     print("expf", every_float(0.0f, 104.0f, 61, [](Digest& d, float x) { d.add(std::exp(-x)); }));
@@ -150,7 +152,9 @@ int main(int argc, char**) {
         Digest d;
         Draws r{2};
         for (std::uint32_t i = 0; i < pairs; ++i) {
-            d.add(std::hypot(r.uniform_float(-20.0f, 20.0f), r.uniform_float(-20.0f, 20.0f)));
+            const float dx = r.uniform_float(-20.0f, 20.0f); // drawn in this order
+            const float dz = r.uniform_float(-20.0f, 20.0f);
+            d.add(std::hypot(dx, dz));
         }
         print("hypotf", d);
     }

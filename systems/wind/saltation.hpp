@@ -5,7 +5,6 @@
 /// [PG90] (docs/references.md).
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 
 namespace snow {
