@@ -30,6 +30,8 @@
 #include "systems/wind/saltation.hpp"
 #include "systems/wind/wind_field.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -48,8 +50,14 @@ struct TransportScratch {
     Vector<float> column_speed;     ///< per (i, k) of the centre lattice: max u² + w² (steps²)
     Vector<std::uint8_t> windy;     ///< per lower corner (k · dim x + i): reads there may be windy
     Vector<std::uint8_t> windy_row; ///< per k: some corner of it is windy
-    Vector<std::uint8_t> tile_windy; ///< per tile of the surface being swept
-    Vector<std::uint32_t> carry;     ///< per column of the surface: units arriving along z
+    /// Per tile of the surface being swept: 0 where calm, else the blows()
+    /// bits of the directions its corners' wind takes.
+    Vector<std::uint8_t> tile_windy;
+    /// Per tile corner ((tiles_x + 1) per row): the horizontal wind (u, w)
+    /// read there, and whether it was read this step.
+    Vector<glm::vec2> corner_wind;
+    Vector<std::uint8_t> corner_read;
+    Vector<std::uint32_t> carry; ///< per column of the surface: units arriving along z
 };
 
 /// What one field step's sweeps share.
@@ -98,13 +106,49 @@ std::size_t downwind(const SnowSurface& s, std::uint32_t ix, std::uint32_t iz, i
     return j;
 }
 
-/// Horizontal wind at `height` above the snow top of cell (ix, iz).
-void wind_over(const WindSampler& air, const SnowSurface& s, std::uint32_t ix, std::uint32_t iz,
-               float height, float& u, float& w) {
-    const float x = s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell;
-    const float z = s.z0 + (static_cast<float>(iz) + 0.5f) * s.cell;
-    float v = 0.0f;
-    air.at(x, s.top_y(s.index(ix, iz)) + height, z, u, v, w);
+/// Side of a tile in cells.
+constexpr std::uint32_t tile_side = 1u << dirty_tile_shift;
+
+/// The cell boundary of tile corner k along an axis of n cells.
+std::uint32_t corner_cell(std::uint32_t k, std::uint32_t n) {
+    return std::min(k * tile_side, n);
+}
+
+/// Horizontal wind (u, w) at tile corner (kx, kz) of `s`, `height` above the
+/// snow top of the cell at that corner: read once a step (the cost follows
+/// the windy tiles, not their cells).
+glm::vec2 corner_wind(const SnowSurface& s, const WindSampler& air, float height,
+                      TransportScratch& scratch, std::uint32_t kx, std::uint32_t kz) {
+    const std::size_t at = static_cast<std::size_t>(kz) * (s.tiles_x() + 1) + kx;
+    if (scratch.corner_read[at] == 0) {
+        const std::uint32_t bx = corner_cell(kx, s.nx), bz = corner_cell(kz, s.nz);
+        const float top = s.top_y(s.index(std::min(bx, s.nx - 1), std::min(bz, s.nz - 1)));
+        float u = 0.0f, v = 0.0f, w = 0.0f;
+        air.at(s.x0 + static_cast<float>(bx) * s.cell, top + height,
+               s.z0 + static_cast<float>(bz) * s.cell, u, v, w);
+        scratch.corner_wind[at] = {u, w};
+        scratch.corner_read[at] = 1;
+    }
+    return scratch.corner_wind[at];
+}
+
+/// Horizontal wind over cell (ix, iz) of a windy tile: its tile's corner
+/// reads, blended bilinearly to the cell's centre. The field is trilinear
+/// over cells larger than a tile, so the blend is close to a read at the
+/// cell; only the read height follows the corner's snow, not the cell's.
+glm::vec2 wind_over(const SnowSurface& s, const TransportScratch& scratch, std::uint32_t ix,
+                    std::uint32_t iz) {
+    const std::uint32_t kx = ix >> dirty_tile_shift, kz = iz >> dirty_tile_shift;
+    const auto along = [](std::uint32_t i, std::uint32_t k, std::uint32_t n) {
+        const std::uint32_t lo = corner_cell(k, n), hi = corner_cell(k + 1, n);
+        return (static_cast<float>(i - lo) + 0.5f) / static_cast<float>(hi - lo);
+    };
+    const float fx = along(ix, kx, s.nx), fz = along(iz, kz, s.nz);
+    const std::size_t row = s.tiles_x() + 1, at = kz * row + kx;
+    const glm::vec2* c = scratch.corner_wind.data();
+    const glm::vec2 low = c[at] + fx * (c[at + 1] - c[at]);
+    const glm::vec2 high = c[at + row] + fx * (c[at + row + 1] - c[at + row]);
+    return low + fz * (high - low);
 }
 
 /// The draw that rounds the shares of cell (ix, iz) for its face `dir` (±1)
@@ -125,16 +169,23 @@ std::uint32_t whole_units(double share, float draw) {
     return static_cast<std::uint32_t>(whole) + (static_cast<double>(draw) < share - whole ? 1 : 0);
 }
 
+/// The bit of SnowSurface tile flags (TransportScratch::tile_windy) saying
+/// that some corner of the tile blows `dir` (±1) along x (`along_x`) or z.
+constexpr std::uint8_t blows(bool along_x, int dir) {
+    return static_cast<std::uint8_t>(1u << ((along_x ? 0u : 2u) + (dir > 0 ? 0u : 1u)));
+}
+
 /// Units the flux carries this step across the face of cell (ix, iz) that
 /// lies `dir` (±1) along x (`along_x`) or z: 0 unless the wind blows that way
 /// fast enough to move the cell's snow.
 std::uint32_t face_units(const SnowSurface& s, const Step& st, const TransportScratch& scratch,
                          std::uint32_t ix, std::uint32_t iz, bool along_x, int dir) {
-    if (scratch.tile_windy[s.tile_of(ix, iz)] == 0) {
+    // A tile none of whose corners blows this way has no cell that does.
+    if ((scratch.tile_windy[s.tile_of(ix, iz)] & blows(along_x, dir)) == 0) {
         return 0;
     }
-    float u = 0.0f, w = 0.0f;
-    wind_over(st.air, s, ix, iz, st.def->height, u, w);
+    const glm::vec2 wind = wind_over(s, scratch, ix, iz);
+    const float u = wind.x, w = wind.y;
     const float along = along_x ? u : w;
     if (!(along * static_cast<float>(dir) > 0.0f)) {
         return 0;
@@ -145,13 +196,13 @@ std::uint32_t face_units(const SnowSurface& s, const Step& st, const TransportSc
         return 0;
     }
     const std::size_t i = s.index(ix, iz);
-    const std::int64_t levels = s.depth_levels(i);
-    const double density =
-        s.snow[i] == 0 || levels <= 0
-            ? st.fresh
-            : st.fresh * static_cast<double>(s.snow[i]) / static_cast<double>(levels);
-    const double flux =
-        saltation_flux(u_star, threshold_friction_velocity(density), st.air_kg_m3, st.g);
+    // Snow nothing packed is fresh: its threshold is known without an exp.
+    const std::uint32_t packed = s.compacted.empty() ? 0 : s.compacted[i];
+    const double threshold =
+        packed == 0 ? st.fresh_threshold
+                    : threshold_friction_velocity(st.fresh * static_cast<double>(s.snow[i]) /
+                                                  static_cast<double>(s.snow[i] - packed));
+    const double flux = saltation_flux(u_star, threshold, st.air_kg_m3, st.g);
     const double share = flux * st.units_per_flux * std::abs(static_cast<double>(along)) / speed;
     if (!(share < max_face_units)) {
         return max_face_units;
@@ -187,6 +238,11 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
                         FlakePool& pool, std::uint32_t ix, std::uint32_t iz, int dx, int dz,
                         std::uint32_t carry) {
     const std::size_t i = s.index(ix, iz);
+    // Nothing arrives and nothing can leave: no snow, or no wind this way.
+    if (carry == 0 && (s.snow[i] == 0 ||
+                       (scratch.tile_windy[s.tile_of(ix, iz)] & blows(dx != 0, dx + dz)) == 0)) {
+        return 0;
+    }
     if (s.is_void(i)) {
         return 0; // nothing reaches a void column (downwind() stops short of it)
     }
@@ -300,38 +356,46 @@ struct WindyBox {
 
 /// Marks the windy tiles of `s` (scratch.tile_windy) and returns their
 /// bounding box, empty (x0 == x1) where all are calm. A tile whose centre's
-/// field read has a calm lower corner (windy_columns) is calm without the
-/// read, and a row of tiles over a calm row of corners is skipped whole;
-/// else it is windy where its centre sees half of `calm` (m/s).
+/// field read would have a calm lower corner (windy_columns) is calm without
+/// a read, and a row of tiles over a calm row of corners is skipped whole;
+/// else its corners are read and it is windy where one of them sees half of
+/// `calm` (m/s).
 WindyBox windy_tiles(const SnowSurface& s, const WindField& f, const Step& st, float calm,
                      TransportScratch& scratch) {
-    const std::uint32_t side = 1u << dirty_tile_shift;
     const auto dim_x = static_cast<std::size_t>(f.centre.dim[0]);
     scratch.tile_windy.assign(static_cast<std::size_t>(s.tiles_x()) * s.tiles_z(), 0);
+    scratch.corner_wind.resize(static_cast<std::size_t>(s.tiles_x() + 1) * (s.tiles_z() + 1));
+    scratch.corner_read.assign(scratch.corner_wind.size(), 0);
     WindyBox box{s.nx, 0, s.nz, 0};
     for (std::uint32_t tz = 0; tz < s.tiles_z(); ++tz) {
-        const std::uint32_t z0 = tz * side, z1 = std::min(z0 + side, s.nz);
-        const std::uint32_t cz = (z0 + z1) / 2; // the centre cell wind_over reads
-        const float z = s.z0 + (static_cast<float>(cz) + 0.5f) * s.cell;
-        // The read's lower corner in x and z (its height does not move them).
+        const std::uint32_t z0 = tz * tile_side, z1 = std::min(z0 + tile_side, s.nz);
+        const float z = s.z0 + 0.5f * static_cast<float>(z0 + z1) * s.cell;
+        // The centre's lower field corner in x and z (its height does not move them).
         const auto k = static_cast<std::size_t>(st.air.point(f.origin.x, f.origin.y, z).k);
         if (scratch.windy_row[k] == 0) {
             continue;
         }
         for (std::uint32_t tx = 0; tx < s.tiles_x(); ++tx) {
-            const std::uint32_t x0 = tx * side, x1 = std::min(x0 + side, s.nx);
-            const std::uint32_t cx = (x0 + x1) / 2;
-            const float x = s.x0 + (static_cast<float>(cx) + 0.5f) * s.cell;
+            const std::uint32_t x0 = tx * tile_side, x1 = std::min(x0 + tile_side, s.nx);
+            const float x = s.x0 + 0.5f * static_cast<float>(x0 + x1) * s.cell;
             const auto i = static_cast<std::size_t>(st.air.point(x, f.origin.y, z).i);
             if (scratch.windy[k * dim_x + i] == 0) {
                 continue;
             }
-            float u = 0.0f, w = 0.0f;
-            wind_over(st.air, s, cx, cz, st.def->height, u, w);
-            if (!(u * u + w * w > 0.25f * calm * calm)) {
+            float fastest = 0.0f;
+            std::uint8_t ways = 0;
+            for (std::uint32_t c = 0; c < 4; ++c) {
+                const glm::vec2 wind =
+                    corner_wind(s, st.air, st.def->height, scratch, tx + (c & 1), tz + (c >> 1));
+                fastest = std::max(fastest, wind.x * wind.x + wind.y * wind.y);
+                ways |=
+                    (wind.x > 0.0f ? blows(true, 1) : 0) | (wind.x < 0.0f ? blows(true, -1) : 0) |
+                    (wind.y > 0.0f ? blows(false, 1) : 0) | (wind.y < 0.0f ? blows(false, -1) : 0);
+            }
+            if (!(fastest > 0.25f * calm * calm) || ways == 0) {
                 continue;
             }
-            scratch.tile_windy[static_cast<std::size_t>(tz) * s.tiles_x() + tx] = 1;
+            scratch.tile_windy[static_cast<std::size_t>(tz) * s.tiles_x() + tx] = ways;
             box = {std::min(box.x0, x0), std::max(box.x1, x1), std::min(box.z0, z0),
                    std::max(box.z1, z1)};
         }
@@ -359,12 +423,15 @@ void prepare_wind_transport(World& w) {
     scratch->column_speed.reserve(columns);
     scratch->windy.reserve(columns);
     scratch->windy_row.reserve(static_cast<std::size_t>(c.dim[2]));
-    std::size_t tiles = 0, row = 0;
+    std::size_t tiles = 0, corners = 0, row = 0;
     w.each<SnowSurface>([&](Entity, const SnowSurface& s) {
         tiles = std::max(tiles, static_cast<std::size_t>(s.tiles_x()) * s.tiles_z());
+        corners = std::max(corners, static_cast<std::size_t>(s.tiles_x() + 1) * (s.tiles_z() + 1));
         row = std::max(row, static_cast<std::size_t>(s.nx));
     });
     scratch->tile_windy.reserve(tiles);
+    scratch->corner_wind.reserve(corners);
+    scratch->corner_read.reserve(corners);
     scratch->carry.reserve(row);
 }
 
