@@ -1,7 +1,8 @@
 // The sun (SceneVisuals::sun): cascades fitted to the view and snapped to
 // whole texels [CSM] [MSDN-SM], shadows on the snow, the snow material under
 // the filmic curve, the masks (AOVs), and measures of the image: shade turns
-// blue, sunlit snow does not clip, and shadows change the picture.
+// blue, sunlit snow does not clip, shadows change the picture, detail normals
+// and glints show, and the glints hold still as the camera turns.
 #include "render/passes/sun_cascades.hpp"
 #include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
@@ -183,6 +184,24 @@ TEST(RenderSun, SnowMaskIsBlackOverTheSkyAndWhiteOverGroundSnow) {
     EXPECT_GT(f.snow.pixel(front.x, front.y)[0], 200);
     EXPECT_EQ(f.snow.width, f.color.width);
     EXPECT_EQ(f.shadow.height, f.color.height);
+}
+
+TEST(RenderSun, DetailNormalsAndGlintsShowAndHoldStillAsTheCameraTurns) {
+    FixtureScene scene;
+    build_sunny_scene(scene);
+    auto context = headless_context();
+    Renderer renderer(*context);
+    const DetailLook d = measure_detail(renderer, scene.camera, [&](const ViewCamera& c) {
+        render_world(renderer, scene.world, scene.visuals, c);
+    });
+    print_detail("sunny fixture 320x240", d);
+    EXPECT_GE(d.look.lit_luma_stddev, 1.5 * d.plain_stddev);
+    EXPECT_LE(d.look.clipped_share, 0.01);
+    EXPECT_GE(d.per_100px, 1.0);
+    EXPECT_LE(d.per_100px, 20.0);
+    EXPECT_GE(d.persisting, 0.98);
+    EXPECT_GT(d.sparkle_change, 0.02);
+    EXPECT_GT(d.detail_change, 1.0);
 }
 
 } // namespace
