@@ -153,7 +153,7 @@ vec3 detail_normal(vec3 n, vec3 p, float footprint, float amount) {
                  (noise_gradient(turn * p.xz / wavelength.y, 2u) * turn);
     vec3 t = vec3(g.x, 0.0, g.y);
     t -= n * dot(n, t); // along the surface
-    return normalize(n - amount * snow_detail.x * t);
+    return normalize(n - amount * t);
 }
 
 // Light that reaches the floor of a hollow has come through snow: ice
@@ -202,7 +202,7 @@ vec3 sparkle(vec3 n, vec3 p, vec3 v, float footprint, float visible) {
     float g = mix(glints(n, p, normalize(v + sun.xyz), footprint, lo),
                   glints(n, p, normalize(v + sun.xyz), footprint, lo + 1.0), level - lo);
     vec3 hue = sun_color.rgb / max(dot(sun_color.rgb, vec3(0.2126, 0.7152, 0.0722)), 1e-6);
-    return snow_detail.y * (3.0 / max(sun_color.w, 1e-6)) * g * mix(0.1, 1.0, visible) * hue;
+    return (3.0 / max(sun_color.w, 1e-6)) * g * mix(0.1, 1.0, visible) * hue;
 }
 // Radiance before the curve of a surface of colour `base` (its snow share
 // `snow`) at p facing n, which sees `visible` of the sun: the ambient and
@@ -231,9 +231,12 @@ vec3 shade(vec3 albedo, float snow, vec3 n, vec3 p, float hollow, out float shad
     vec3 v = normalize(camera_pos.xyz - p);
     // Metres a pixel covers on the surface; stretched where it is seen edge on.
     float footprint = distance(camera_pos.xyz, p) / (lens.x * max(dot(n, v), 0.25));
-    vec3 detail = detail_normal(n, p, footprint, snow);
+    // Switched off (snow_detail) or without snow, the detail costs nothing.
+    vec3 detail = snow_detail.x > 0.0 && snow > 0.0 ? detail_normal(n, p, footprint, snow) : n;
     vec3 base = mix(albedo, snow_color.rgb * snow_albedo * subsurface_tint(hollow), snow);
-    vec3 glints = snow > 0.0 ? snow * sparkle(detail, p, v, footprint, visible) : vec3(0.0);
+    vec3 glints = snow_detail.y > 0.0 && snow > 0.0
+                      ? snow * sparkle(detail, p, v, footprint, visible)
+                      : vec3(0.0);
     return filmic(sunlit(base, snow, detail, p, visible) + glints);
 #else
     shadow = 0.0;
