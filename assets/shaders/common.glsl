@@ -145,7 +145,7 @@ vec2 noise_gradient(vec2 x, uint seed) {
 // `footprint`: metres one pixel covers at p; `amount`: how much of it to tilt.
 vec3 detail_normal(vec3 n, vec3 p, float footprint, float amount) {
     const vec2 wavelength = vec2(0.9, 0.23); // m
-    const vec2 slope = vec2(0.8, 0.45);
+    const vec2 slope = vec2(1.0, 0.55);
     const mat2 turn = mat2(0.8, 0.6, -0.6, 0.8); // the octaves' grids do not line up
     vec2 g = slope.x * smoothstep(3.0, 8.0, wavelength.x / footprint) *
                  noise_gradient(p.xz / wavelength.x, 1u) +

@@ -66,8 +66,9 @@ TEST(RenderSunlitVillage, DetailNormalsAndGlintsShowAndHoldStillAsTheCameraTurns
                        [&](const ViewCamera& c) { renderer.render(*r.sim, r.visuals, c); });
     print_detail("village 1280x720", d);
     EXPECT_GE(d.look.lit_luma_stddev, 1.5 * d.plain_stddev);
-    // Before the sun the lamps' falloff spread it 15.09 (docs/rendering.md).
-    EXPECT_GE(d.look.lit_luma_stddev, 17.0);
+    // Half as much again as before the sun, when the lamps' falloff spread
+    // it 15.09 (docs/rendering.md).
+    EXPECT_GE(d.look.lit_luma_stddev, 1.5 * 15.09);
     EXPECT_LE(d.look.clipped_share, 0.01);
     EXPECT_GE(d.per_100px, 1.0);
     EXPECT_LE(d.per_100px, 20.0);
