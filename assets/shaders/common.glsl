@@ -187,23 +187,24 @@ float glints(vec3 n, vec3 p, vec3 h, float footprint, float level) {
         uvec3 k = pcg3d(uvec3(c) ^ uvec3(salt));
         vec3 d = p - (vec3(c) + unit_random(k)) * cell;
         vec3 facet = normalize(n + 0.6 * (2.0 * unit_random(pcg3d(k)) - 1.0));
-        float mirror = smoothstep(0.94, 0.975, dot(facet, h));
+        float mirror = smoothstep(0.94, 0.975, dot(facet, h)); // within 20°, full by 13°
         float window = max(1.0 - dot(d, d) / reach2, 0.0);
         sum += mirror * exp(-0.5 * dot(d, d) / s2) * (r * r / s2) * window * window;
     }
     return sum;
 }
 
-// The glints' radiance at p: a peak 3x that of flat sunlit snow after the
-// exposure (below the curve's white), faint where the shadow holds the sun.
+// The glints' radiance at p: a peak of 3 after the exposure (flat sunlit
+// snow: 1.1; the sum stays below the curve's white), faint in the shadow.
 vec3 sparkle(vec3 n, vec3 p, vec3 v, float footprint, float visible) {
     float level = log2(footprint / glint_radius);
     float lo = floor(level);
-    float g = mix(glints(n, p, normalize(v + sun.xyz), footprint, lo),
-                  glints(n, p, normalize(v + sun.xyz), footprint, lo + 1.0), level - lo);
+    vec3 h = normalize(v + sun.xyz);
+    float g = mix(glints(n, p, h, footprint, lo), glints(n, p, h, footprint, lo + 1.0), level - lo);
     vec3 hue = sun_color.rgb / max(dot(sun_color.rgb, vec3(0.2126, 0.7152, 0.0722)), 1e-6);
     return (3.0 / max(sun_color.w, 1e-6)) * g * mix(0.1, 1.0, visible) * hue;
 }
+
 // Radiance before the curve of a surface of colour `base` (its snow share
 // `snow`) at p facing n, which sees `visible` of the sun: the ambient and
 // lamps, the sun's wrapped diffuse and, for the snow, GGX specular.
