@@ -184,6 +184,8 @@ void Renderer::Impl::fill_block(FrameBlock& b, const World& world, const SceneVi
         }
         b.cascade_texel.w = 1.0f / static_cast<float>(settings.shadow_map_size);
     }
+    b.snow_detail = {settings.detail_normals ? 1.0f : 0.0f, settings.sparkle ? 1.0f : 0.0f, 0.0f,
+                     0.0f};
     b.counts = {lights, 0, 0, static_cast<int>(settings.output)};
     if (const Fog* fog = visuals.fog ? &*visuals.fog : nullptr) {
         const float fog_param = fog->mode == FogMode::half_life

@@ -7,7 +7,7 @@ uniform vec3 albedo;
 void main() {
     vec3 n = normalize(v_normal);
     float shadow;
-    vec3 color = shade(albedo, 0.0, n, v_world, shadow);
+    vec3 color = shade(albedo, 0.0, n, v_world, 0.0, shadow);
 #ifdef FOG
     color = apply_fog(color, v_world);
 #endif

@@ -21,6 +21,7 @@ layout(std140) uniform Frame {
     vec4 view_forward; // xyz: the camera's forward axis
     vec4 cascade_far;  // xyz: view depth where each shadow cascade ends
     vec4 cascade_texel; // xyz: metres per shadow texel, w: 1 / texels of a cascade
+    vec4 snow_detail;  // x: detail normals, y: sparkle (1 on, 0 off)
     ivec4 counts;      // x: point lights, yz: occlusion map size, w: output (0 colour, 1 snow, 2 shadow)
     vec4 light_pos[8]; // xyz, w: intensity
     vec4 light_color[8];
@@ -104,26 +105,140 @@ vec3 filmic(vec3 x) {
     x *= sun_color.w;
     return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
-#endif
 
-// A surface of colour `albedo`, covered by snow to the amount `snow`, at p
-// facing n. Without a sun: the diffuse irradiance of ambient, sky and lamps.
-// With one: the same ambient and lamps (the sky-coloured hemisphere turns
-// shade blue), the sun's wrapped diffuse and GGX specular for the snow,
-// both held back by its shadow, under the filmic curve. `shadow`: the share
-// of the sun the shadow maps hold back (0 without a sun).
-vec3 shade(vec3 albedo, float snow, vec3 n, vec3 p, out float shadow) {
-#ifdef SUN
+// Three random words from three [PCG3D] (Jarzynski & Olano's pcg3d).
+uvec3 pcg3d(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return v;
+}
+
+vec3 unit_random(uvec3 k) {
+    return vec3(k >> 8u) * (1.0 / 16777216.0); // [0, 1)
+}
+
+// Gradient of value noise over the plane, quintic-smoothed, taken
+// analytically [IQN]; `seed` picks one of many independent fields.
+vec2 noise_gradient(vec2 x, uint seed) {
+    vec2 i = floor(x);
+    vec2 f = x - i;
+    vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    vec2 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
+    uvec3 k = uvec3(ivec3(ivec2(i), 0)) + uvec3(0u, 0u, seed);
+    float a = unit_random(pcg3d(k)).x;
+    float b = unit_random(pcg3d(k + uvec3(1u, 0u, 0u))).x;
+    float c = unit_random(pcg3d(k + uvec3(0u, 1u, 0u))).x;
+    float d = unit_random(pcg3d(k + uvec3(1u, 1u, 0u))).x;
+    float e = a - b - c + d;
+    return du * vec2(b - a + e * u.y, c - a + e * u.x);
+}
+
+// Snow's small relief the height field is too coarse for: two octaves of
+// slopes over world x/z (they stay on the snow as the camera moves), each
+// faded out as its wavelength nears a few pixels [TMPA] so it cannot alias.
+// `footprint`: metres one pixel covers at p; `amount`: how much of it to tilt.
+vec3 detail_normal(vec3 n, vec3 p, float footprint, float amount) {
+    const vec2 wavelength = vec2(0.9, 0.23); // m
+    const vec2 slope = vec2(1.0, 0.55);
+    const mat2 turn = mat2(0.8, 0.6, -0.6, 0.8); // the octaves' grids do not line up
+    vec2 g = slope.x * smoothstep(3.0, 8.0, wavelength.x / footprint) *
+                 noise_gradient(p.xz / wavelength.x, 1u) +
+             slope.y * smoothstep(3.0, 8.0, wavelength.y / footprint) *
+                 (noise_gradient(turn * p.xz / wavelength.y, 2u) * turn);
+    vec3 t = vec3(g.x, 0.0, g.y);
+    t -= n * dot(n, t); // along the surface
+    return normalize(n - amount * t);
+}
+
+// Light that reaches the floor of a hollow has come through snow: ice
+// absorbs red most and blue least [WAR], so the floor of a trench or a
+// footprint turns bluer the deeper it is (Beer-Lambert over the depth,
+// coefficients per metre).
+vec3 subsurface_tint(float depth) {
+    return exp(-depth * vec3(5.0, 2.2, 0.9));
+}
+
+// Glints after [BW15] [WB16]: a jittered 3D grid anchored in the world holds
+// one glint per cell, a sphere of radius glint_radius cells around a random
+// point, with a random facet normal about n; it shines where its facet
+// reflects the sun into the eye (h: the half vector). Each glint is a
+// Gaussian of its own radius convolved with the pixel's (half a footprint),
+// its energy kept, so a glint about a pixel wide moves smoothly across
+// pixels instead of popping; cells scale by powers of two with the footprint
+// (two levels blended), so a glint stays one to two pixels wide at every
+// distance, and the 8 cells nearest p hold every glint that reaches it.
+const float glint_radius = 0.25;
+float glints(vec3 n, vec3 p, vec3 h, float footprint, float level) {
+    float cell = exp2(level);
+    float r = glint_radius * cell;
+    float s2 = r * r + 0.25 * footprint * footprint;
+    float reach2 = 0.25 * cell * cell; // a half cell: the 8 nearest cells cover it
+    ivec3 base = ivec3(floor(p / cell - 0.5));
+    uint salt = uint(int(level) + 64) * 0x9E3779B9u;
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        ivec3 c = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        uvec3 k = pcg3d(uvec3(c) ^ uvec3(salt));
+        vec3 d = p - (vec3(c) + unit_random(k)) * cell;
+        vec3 facet = normalize(n + 0.6 * (2.0 * unit_random(pcg3d(k)) - 1.0));
+        float mirror = smoothstep(0.94, 0.975, dot(facet, h)); // within 20°, full by 13°
+        float window = max(1.0 - dot(d, d) / reach2, 0.0);
+        sum += mirror * exp(-0.5 * dot(d, d) / s2) * (r * r / s2) * window * window;
+    }
+    return sum;
+}
+
+// The glints' radiance at p: a peak of 3 after the exposure (flat sunlit
+// snow: 1.1; the sum stays below the curve's white), faint in the shadow.
+vec3 sparkle(vec3 n, vec3 p, vec3 v, float footprint, float visible) {
+    float level = log2(footprint / glint_radius);
+    float lo = floor(level);
+    vec3 h = normalize(v + sun.xyz);
+    float g = mix(glints(n, p, h, footprint, lo), glints(n, p, h, footprint, lo + 1.0), level - lo);
+    vec3 hue = sun_color.rgb / max(dot(sun_color.rgb, vec3(0.2126, 0.7152, 0.0722)), 1e-6);
+    return (3.0 / max(sun_color.w, 1e-6)) * g * mix(0.1, 1.0, visible) * hue;
+}
+
+// Radiance before the curve of a surface of colour `base` (its snow share
+// `snow`) at p facing n, which sees `visible` of the sun: the ambient and
+// lamps, the sun's wrapped diffuse and, for the snow, GGX specular.
+vec3 sunlit(vec3 base, float snow, vec3 n, vec3 p, float visible) {
     vec3 l = sun.xyz;
-    float visible = sun_visibility(p, n);
-    shadow = 1.0 - visible;
-    vec3 base = mix(albedo, snow_color.rgb * snow_albedo, snow);
     float w = snow_wrap * snow;
     float diffuse = max((dot(n, l) + w) / (1.0 + w), 0.0);
     float specular = snow * ggx_specular(n, normalize(camera_pos.xyz - p), l);
-    vec3 radiance = base * (irradiance(n, p) + sun_color.rgb * diffuse * visible) +
-                    sun_color.rgb * specular * visible;
-    return filmic(radiance);
+    return base * (irradiance(n, p) + sun_color.rgb * diffuse * visible) +
+           sun_color.rgb * specular * visible;
+}
+#endif
+
+// A surface of colour `albedo`, covered by snow to the amount `snow`, at p
+// facing n, `hollow` metres below the snow around it (snow surfaces; 0
+// elsewhere). Without a sun: the diffuse irradiance of ambient, sky and
+// lamps. With one: sunlit() held back by the sun's shadow, under the filmic
+// curve (the sky-coloured hemisphere turns shade blue), its snow with detail
+// normals, the blue of hollows and glints. `shadow`: the share of the sun
+// the shadow maps hold back (0 without a sun).
+vec3 shade(vec3 albedo, float snow, vec3 n, vec3 p, float hollow, out float shadow) {
+#ifdef SUN
+    float visible = sun_visibility(p, n);
+    shadow = 1.0 - visible;
+    vec3 v = normalize(camera_pos.xyz - p);
+    // Metres a pixel covers on the surface; stretched where it is seen edge on.
+    float footprint = distance(camera_pos.xyz, p) / (lens.x * max(dot(n, v), 0.25));
+    // Switched off (snow_detail) or without snow, the detail costs nothing.
+    vec3 detail = snow_detail.x > 0.0 && snow > 0.0 ? detail_normal(n, p, footprint, snow) : n;
+    vec3 base = mix(albedo, snow_color.rgb * snow_albedo * subsurface_tint(hollow), snow);
+    vec3 glints = snow_detail.y > 0.0 && snow > 0.0
+                      ? snow * sparkle(detail, p, v, footprint, visible)
+                      : vec3(0.0);
+    return filmic(sunlit(base, snow, detail, p, visible) + glints);
 #else
     shadow = 0.0;
     return mix(albedo, snow_color.rgb, snow) * irradiance(n, p);

@@ -41,7 +41,7 @@ void main() {
     float incline = clamp(n.y, 0.0, 1.0); // [SKY step 3]
     float cover = incline * sky_exposure(v_world, n) * snow_color.w;
     float shadow;
-    vec3 color = shade(albedo, cover, n, v_world, shadow);
+    vec3 color = shade(albedo, cover, n, v_world, 0.0, shadow);
 #ifdef FOG
     color = apply_fog(color, v_world);
 #endif

@@ -17,6 +17,7 @@ out float v_depth; // snow depth (m), faded out per fragment as it thins to noth
 #ifdef SUN
 out vec3 v_world; // shaded per fragment (surface.frag)
 out vec3 v_normal;
+out float v_hollow; // how far the snow lies below its surroundings (m)
 #endif
 
 // A bare top rising faster than this between two samples is an edge (eaves, a
@@ -76,6 +77,26 @@ vec3 gradient(vec2 h, float p, vec2 lo, float plo, vec2 hi, float phi) {
     return vec3(along, steep, down);
 }
 
+#ifdef SUN
+// How far the snow top h.r of cell c lies below the mean of the tops
+// hollow_cells away in the eight compass directions: the depth of a trench or
+// a footprint (a slope's tops cancel in opposite pairs). A top across an edge
+// of the bare top counts as level with h.
+const int hollow_cells = 3;
+float hollow(ivec2 c, vec2 h) {
+    ivec2 last = surface_grid.xy - 1;
+    float limit = edge_slope * float(hollow_cells) * surface_place.z;
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        float a = float(i) * (PI / 4.0);
+        ivec2 o = ivec2(round(vec2(cos(a), sin(a)) * float(hollow_cells)));
+        vec2 t = cell(clamp(c + o, ivec2(0), last));
+        sum += abs(t.g - h.g) <= limit ? t.r : h.r;
+    }
+    return max(sum / 8.0 - h.r, 0.0);
+}
+#endif
+
 void main() {
     int side = surface_grid.w;
     int step = surface_grid.z;
@@ -117,10 +138,11 @@ void main() {
 #ifdef SUN
     v_world = world;
     v_normal = normal;
+    v_hollow = hollow(c, cell(c));
     vec3 color = vec3(0.0);
 #else
     float shadow;
-    vec3 color = shade(vec3(0.0), 1.0, normal, world, shadow);
+    vec3 color = shade(vec3(0.0), 1.0, normal, world, 0.0, shadow);
 #ifdef FOG
     color = apply_fog(color, world);
 #endif

@@ -288,6 +288,11 @@ struct RenderSettings {
     /// With a sun: scales the exposure the sun sets (flat snow in full sun at
     /// about 220 of 255) before the filmic tone curve.
     float exposure = 1.0f;
+    /// With a sun: two octaves of world-anchored detail normals on the snow
+    /// surfaces (docs/rendering.md, "Snow detail") ...
+    bool detail_normals = true;
+    /// ... and glints of the sun in them.
+    bool sparkle = true;
     RenderOutput output = RenderOutput::color;
 
     /// Draw the world's wind field (if it has one) as arrows coloured by speed.

@@ -36,13 +36,14 @@ struct FrameBlock {
     glm::vec4 view_forward{0.0f};  ///< xyz: the camera's forward axis (cascade choice)
     glm::vec4 cascade_far{0.0f};   ///< xyz: view depth where each cascade ends
     glm::vec4 cascade_texel{0.0f}; ///< xyz: metres per shadow texel, w: 1 / cascade texels
+    glm::vec4 snow_detail{0.0f};   ///< x: detail normals, y: sparkle (1 on, 0 off)
     glm::ivec4 counts{0};          ///< w: RenderOutput
     glm::vec4 light_pos[max_point_lights]{};
     glm::vec4 light_color[max_point_lights]{};
     glm::mat4 sun_atlas[frame_sun_cascades]{}; ///< world → (u, v, depth) of the shadow atlas
 };
 static_assert(sizeof(FrameBlock) ==
-                  (2 + frame_sun_cascades) * 64 + 17 * 16 + 2 * max_point_lights * 16,
+                  (2 + frame_sun_cascades) * 64 + 18 * 16 + 2 * max_point_lights * 16,
               "FrameBlock must match the std140 layout of common.glsl");
 
 } // namespace snow

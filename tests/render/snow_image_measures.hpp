@@ -1,13 +1,16 @@
 /// @file snow_image_measures.hpp
 /// @brief Measures of how snow looks, taken on a rendered image with its two
 /// masks (RenderOutput::snow_mask, ::shadow_mask): the blue of its shade, its
-/// clipped pixels and the spread of its sunlit brightness.
+/// clipped pixels, the spread of its sunlit brightness and its glints.
 #pragma once
 
 #include <snow/render.hpp>
 
+#include <glm/vec2.hpp>
+
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace snow::test {
 
@@ -31,5 +34,50 @@ struct SnowLook {
 };
 
 [[nodiscard]] SnowLook measure_snow(const MaskedFrame& frame);
+
+/// Per pixel of `with`, how many levels of luma it is brighter than the same
+/// frame drawn `without` the sparkle; 0 where it is not lit snow.
+struct SparkleRise {
+    int width = 0, height = 0;
+    std::vector<double> rise; ///< top row first
+};
+[[nodiscard]] SparkleRise sparkle_rise(const MaskedFrame& with, const Image& without);
+
+/// Luma rise that makes a pixel part of a glint.
+inline constexpr double glint_rise = 12.0;
+
+/// The glints: 8-connected patches of pixels risen by ≥ glint_rise, each as
+/// its centroid (pixels, top row first) weighted by the rise.
+[[nodiscard]] std::vector<glm::dvec2> find_glints(const SparkleRise& frame);
+
+/// Share of `glints` (found on one frame) still there in `later`: a pixel
+/// within 1.5 px of where `to_later` maps the glint's centre risen by at
+/// least half of glint_rise.
+[[nodiscard]] double persisting_share(const std::vector<glm::dvec2>& glints,
+                                      const SparkleRise& later,
+                                      const std::function<glm::dvec2(glm::dvec2)>& to_later);
+
+/// How many levels of luma the pixels of two frames of one size differ by, on average.
+[[nodiscard]] double mean_luma_difference(const Image& a, const Image& b);
+
+/// The snow's detail normals and glints measured on one view.
+struct DetailLook {
+    SnowLook look;               ///< the frame as drawn
+    double plain_stddev = 0.0;   ///< lit snow's luma deviation without detail normals and sparkle
+    std::size_t glints = 0;      ///< glints on the frame (find_glints)
+    double per_100px = 0.0;      ///< ... per 100 × 100 pixels of lit snow
+    double persisting = 0.0;     ///< share still there after the camera turns 0.1° (yaw)
+    double sparkle_change = 0.0; ///< mean |Δ luma| when the sparkle is turned off ...
+    double detail_change = 0.0;  ///< ... and when the detail normals are
+};
+
+/// Draws `camera`'s view with `draw` (one frame by `renderer` at the given
+/// camera, whose settings it toggles) with and without sparkle and detail
+/// normals, and turned 0.1°, and measures it.
+[[nodiscard]] DetailLook measure_detail(Renderer& renderer, const ViewCamera& camera,
+                                        const std::function<void(const ViewCamera&)>& draw);
+
+/// Prints a DetailLook on one line after `what`.
+void print_detail(const char* what, const DetailLook& d);
 
 } // namespace snow::test

@@ -1,6 +1,7 @@
 // The village in sunshine (assets/scenes/village_effects.gltf declares a
 // sun), measured on the image at 1280×720 with its masks: shaded snow is
-// blue, sunlit snow does not clip, and the shadows are there to see.
+// blue, sunlit snow does not clip, the shadows are there to see, the detail
+// normals and glints show and the glints hold still as the camera turns.
 #include "tests/render/render_fixture.hpp"
 #include "tests/render/snow_image_measures.hpp"
 #include <snow/scene.hpp>
@@ -16,12 +17,19 @@ namespace {
 constexpr int village_width = 1280;
 constexpr int village_height = 720;
 
-TEST(RenderSunlitVillage, ShadeIsBlueAndSunlitSnowDoesNotClip) {
+SceneLoadResult village_after_240_ticks() {
     SceneLoadResult r =
         load_scene_file(std::string(SNOW_SOURCE_DIR) + "/assets/scenes/village_effects.gltf");
+    if (r.sim != nullptr) {
+        r.sim->run(240);
+    }
+    return r;
+}
+
+TEST(RenderSunlitVillage, ShadeIsBlueAndSunlitSnowDoesNotClip) {
+    SceneLoadResult r = village_after_240_ticks();
     ASSERT_NE(r.sim, nullptr) << r.error;
     ASSERT_TRUE(r.visuals.sun.has_value());
-    r.sim->run(240);
     const ViewCamera camera = ViewCamera::from_def(r.visuals.camera);
     auto context = headless_context(village_width, village_height);
     Renderer renderer(*context);
@@ -46,6 +54,27 @@ TEST(RenderSunlitVillage, ShadeIsBlueAndSunlitSnowDoesNotClip) {
     EXPECT_GT(look.shadowed_pixels, look.snow_pixels / 50); // the houses' shadows
     EXPECT_GE(look.shadow_blue_red, 1.08);
     EXPECT_LE(look.clipped_share, 0.01);
+}
+
+TEST(RenderSunlitVillage, DetailNormalsAndGlintsShowAndHoldStillAsTheCameraTurns) {
+    SceneLoadResult r = village_after_240_ticks();
+    ASSERT_NE(r.sim, nullptr) << r.error;
+    auto context = headless_context(village_width, village_height);
+    Renderer renderer(*context);
+    const DetailLook d =
+        measure_detail(renderer, ViewCamera::from_def(r.visuals.camera),
+                       [&](const ViewCamera& c) { renderer.render(*r.sim, r.visuals, c); });
+    print_detail("village 1280x720", d);
+    EXPECT_GE(d.look.lit_luma_stddev, 1.5 * d.plain_stddev);
+    // Half as much again as before the sun, when the lamps' falloff spread
+    // it 15.09 (docs/rendering.md).
+    EXPECT_GE(d.look.lit_luma_stddev, 1.5 * 15.09);
+    EXPECT_LE(d.look.clipped_share, 0.01);
+    EXPECT_GE(d.per_100px, 1.0);
+    EXPECT_LE(d.per_100px, 20.0);
+    EXPECT_GE(d.persisting, 0.98);
+    EXPECT_GT(d.sparkle_change, 0.02);
+    EXPECT_GT(d.detail_change, 1.0);
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 // The sun (SceneVisuals::sun): cascades fitted to the view and snapped to
 // whole texels [CSM] [MSDN-SM], shadows on the snow, the snow material under
 // the filmic curve, the masks (AOVs), and measures of the image: shade turns
-// blue, sunlit snow does not clip, and shadows change the picture.
+// blue, sunlit snow does not clip, shadows change the picture, detail normals
+// and glints show, and the glints hold still as the camera turns.
 #include "render/passes/sun_cascades.hpp"
 #include "render/renderer_internals.hpp"
 #include "tests/render/render_fixture.hpp"
@@ -183,6 +184,57 @@ TEST(RenderSun, SnowMaskIsBlackOverTheSkyAndWhiteOverGroundSnow) {
     EXPECT_GT(f.snow.pixel(front.x, front.y)[0], 200);
     EXPECT_EQ(f.snow.width, f.color.width);
     EXPECT_EQ(f.shadow.height, f.color.height);
+}
+
+TEST(RenderSun, DetailNormalsAndGlintsShowAndHoldStillAsTheCameraTurns) {
+    FixtureScene scene;
+    build_sunny_scene(scene);
+    auto context = headless_context();
+    Renderer renderer(*context);
+    const DetailLook d = measure_detail(renderer, scene.camera, [&](const ViewCamera& c) {
+        render_world(renderer, scene.world, scene.visuals, c);
+    });
+    print_detail("sunny fixture 320x240", d);
+    EXPECT_GE(d.look.lit_luma_stddev, 1.5 * d.plain_stddev);
+    EXPECT_LE(d.look.clipped_share, 0.01);
+    EXPECT_GE(d.per_100px, 1.0);
+    EXPECT_LE(d.per_100px, 20.0);
+    EXPECT_GE(d.persisting, 0.98);
+    EXPECT_GT(d.sparkle_change, 0.02);
+    EXPECT_GT(d.detail_change, 1.0);
+}
+
+/// The ground in front of the shelter raised to 20 cm of flat snow over
+/// x 0..4, z 3..5, with (`trench`) a trench 2 cm deep at the bottom along
+/// z 3.75..4.25.
+Image render_snow_bank(bool trench) {
+    FixtureScene scene;
+    build_sunny_scene(scene);
+    SnowSurface& ground = scene.world.get<SnowSurface>(scene.ground_surface);
+    for (std::uint32_t iz = 0; iz < ground.nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < ground.nx; ++ix) {
+            const float x = ground.x0 + (static_cast<float>(ix) + 0.5f) * ground.cell;
+            const float z = ground.z0 + (static_cast<float>(iz) + 0.5f) * ground.cell;
+            const bool bank = x > 0.0f && x < 4.0f && z > 3.0f && z < 5.0f;
+            const bool floor = trench && bank && z > 3.75f && z < 4.25f;
+            if (bank) {
+                ground.snow[ground.index(ix, iz)] = static_cast<std::uint32_t>(
+                    std::lround((floor ? 0.02f : 0.2f) / fixture_unit_height));
+            }
+        }
+    }
+    return render_image(scene.world, scene.visuals, scene.camera);
+}
+
+TEST(RenderSun, ATrenchFloorIsBluerThanLevelSnow) {
+    FixtureScene scene;
+    build_sunny_scene(scene);
+    const glm::ivec2 floor = to_pixel(scene.camera, {2.0f, 0.02f, 4.0f});
+    const glm::vec3 in_trench = mean_color(render_snow_bank(true), floor, 2);
+    const glm::vec3 level = mean_color(render_snow_bank(false), floor, 2);
+    const float trench_blue_red = in_trench.b / in_trench.r, level_blue_red = level.b / level.r;
+    std::printf("trench floor B/R %.3f, level snow B/R %.3f\n", trench_blue_red, level_blue_red);
+    EXPECT_GT(trench_blue_red, 1.05f * level_blue_red);
 }
 
 } // namespace
