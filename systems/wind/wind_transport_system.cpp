@@ -16,10 +16,11 @@
 // first, then every column along z (the order of the axes alternates from
 // step to step), in whole units; a face's share of a unit is rounded up or
 // down by a counter-based draw, so rounding neither loses nor favours small
-// cells. Units only move, the ledger total holds. Tiles whose centre sees
-// less than half the wind that moves fresh snow are calm, and only tiles
-// under field columns where the air anywhere reaches that speed are looked
-// at: the cost follows the windy area, not the surface's size.
+// cells. Units only move, the ledger total holds. The field is read once a
+// step at each tile corner and blended to the cells; tiles whose corners all
+// see less than half the wind that moves fresh snow are calm, and only tiles
+// under field columns where the air anywhere reaches that speed are read at
+// all: the cost follows the windy area, not the surface's size.
 #include "ecs/rng.hpp"
 #include "systems/api/systems.hpp"
 #include "systems/core/random_streams.hpp"
@@ -70,11 +71,11 @@ struct Step {
     double g = 0.0;               ///< gravity (m/s²)
     double fresh = 0.0;           ///< density of fresh snow (kg/m³): the lowest a cell holds
     double fresh_threshold = 0.0; ///< u*t of fresh snow: nothing drifts below it
-    double units_per_flux =
-        0.0; ///< units a face passes per kg/(m·s) of flux: cell · seconds / unit
+    /// Units a face passes per kg/(m·s) of flux: cell · seconds / unit.
+    double units_per_flux = 0.0;
     /// Levels a unit the wind lays down is packed by: 1 − fresh / wind-packed density.
     double wind_packing = 0.0;
-    RngKey key;             ///< slot: the cell; draw: surface, rounding, axis, direction
+    RngKey key; ///< slot: the sweep line (draw_for); draw: surface, rounding, axis, direction
     std::uint32_t draw = 0; ///< this surface's first draw index
     float k_over_m = 1.0f;  ///< drag of clumps
 };
@@ -210,10 +211,11 @@ std::uint32_t face_units(const SnowSurface& s, const Step& st, const TransportSc
     return whole_units(share, draw_for(st, ix, iz, along_x, dir, 0));
 }
 
-/// Lays `units` the flux along (dx, dz) drops into cell i, up to the cell's
+/// Lays `units` the flux along (dx, dz) drops into cell (ix, iz), up to the cell's
 /// limit, as wind-packed snow [CP10]: returns what did not fit.
-std::uint32_t lay(SnowSurface& s, const Step& st, std::size_t i, int dx, int dz,
-                  std::uint32_t units) {
+std::uint32_t lay(SnowSurface& s, const Step& st, std::uint32_t ix, std::uint32_t iz, int dx,
+                  int dz, std::uint32_t units) {
+    const std::size_t i = s.index(ix, iz);
     const std::uint32_t laid = std::min(units, max_cell_units - s.snow[i]);
     if (laid == 0) {
         return units;
@@ -223,10 +225,7 @@ std::uint32_t lay(SnowSurface& s, const Step& st, std::size_t i, int dx, int dz,
     const std::uint32_t room =
         max_compaction(s.snow[i]) - (s.compacted.empty() ? 0 : s.compacted[i]);
     const double packing = static_cast<double>(laid) * st.wind_packing;
-    s.compact(i,
-              std::min(room, whole_units(packing, draw_for(st, static_cast<std::uint32_t>(i % s.nx),
-                                                           static_cast<std::uint32_t>(i / s.nx),
-                                                           dx != 0, dx + dz, 1))));
+    s.compact(i, std::min(room, whole_units(packing, draw_for(st, ix, iz, dx != 0, dx + dz, 1))));
     return units - laid;
 }
 
@@ -258,10 +257,10 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
         }
         // What the wind cannot carry on is laid here; what does not fit goes on.
         const std::uint32_t through = std::min(carry, capacity);
-        out = through + taken + lay(s, st, i, dx, dz, carry - through);
+        out = through + taken + lay(s, st, ix, iz, dx, dz, carry - through);
     } else {
         // Against a wall or a closed end: only a full cell lets units on.
-        out = lay(s, st, i, dx, dz, carry);
+        out = lay(s, st, ix, iz, dx, dz, carry);
     }
     if (out == 0 || next != off_surface) {
         return out;
@@ -447,7 +446,7 @@ void wind_transport_system(World& w) {
     st.per_wind = friction_per_wind(st.def->height, st.def->roughness);
     st.air_kg_m3 = air_density(config.air_temperature);
     st.g = std::abs(static_cast<double>(config.gravity.y));
-    st.fresh = fresh_snow_density(config.air_temperature);
+    st.fresh = fresh_snow_density(config);
     st.fresh_threshold = threshold_friction_velocity(st.fresh);
     st.wind_packing = 1.0 - st.fresh / wind_packed_snow_density;
     st.key = {config.seed, f.steps, 0, random_stream::transport};

@@ -53,12 +53,12 @@ DriftFlux drifting_snow(const DriftingSnow& run) {
         out.balanced = out.balanced && sim.mass().balanced();
     }
     const double lost_kg = static_cast<double>(before - half(true, false)) * unit_kg;
-    out.laid_density = fresh_snow_density(cfg.air_temperature) *
-                       static_cast<double>(half(false, false) - lee_units) /
+    const double fresh = fresh_snow_density(cfg);
+    out.laid_density = fresh * static_cast<double>(half(false, false) - lee_units) /
                        static_cast<double>(half(false, true) - lee_levels);
     out.flux = lost_kg / (static_cast<double>(ticks) * run.dt * strip.size_z);
     out.u_star_10m = run.wind * friction_per_wind(10.0, transport.roughness);
-    out.u_star_t = threshold_friction_velocity(fresh_snow_density(cfg.air_temperature));
+    out.u_star_t = threshold_friction_velocity(fresh);
     out.published = saltation_flux(out.u_star_10m, out.u_star_t, air_density(cfg.air_temperature),
                                    std::abs(cfg.gravity.y));
     return out;
