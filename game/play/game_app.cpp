@@ -88,6 +88,7 @@ int play(GameOptions opt) {
     follow_session(*session, settings);
     if (opt.bare_meshes) {
         settings.mesh_snow = 0.0f;
+        settings.body_snow = 0.0f;
     }
     settings.min_snow_depth = opt.min_snow_depth.value_or(settings.min_snow_depth);
     renderer = std::make_unique<Renderer>(*context, settings);

@@ -254,6 +254,9 @@ struct RenderSettings {
     glm::vec3 snow_color{0.94f, 0.96f, 1.0f};
     /// How white exposed, sky-facing meshes get, 0..1 ([SKY] snow blend).
     float mesh_snow = 1.0f;
+    /// How white the moving bodies' up-facing parts get where the sky map
+    /// shows them open to the sky, 0..1 (render-only, docs/rendering.md).
+    float body_snow = 1.0f;
     /// A fragment counts as seen from the sky if y >= occlusion top_y − this (m).
     float exposure_tolerance =
         0.05f; ///< the sky map's own tolerance (a static_assert in renderer.cpp)

@@ -7,10 +7,12 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace snow {
@@ -112,12 +114,17 @@ bool BodyPass::wanted(const World& world, const SceneVisuals&) const {
 }
 
 void BodyPass::run(const World& world, FrameContext& frame) {
+    std::vector<std::string> defines = lit_defines(frame);
+    if (frame.occlusion) {
+        defines.emplace_back("OCCLUSION"); // snow on the parts the sky map shows open
+    }
     const Program& program = frame.depth_only
                                  ? frame.programs.get("body.vert", "depth.frag", {})
-                                 : frame.programs.get("body.vert", "body.frag", lit_defines(frame));
+                                 : frame.programs.get("body.vert", "body.frag", defines);
     program.use();
     const int center = program.uniform("center"), scale = program.uniform("scale");
     const int half_height = program.uniform("half_height"), albedo = program.uniform("albedo");
+    glUniform1f(program.uniform("snow_amount"), std::clamp(frame.settings.body_snow, 0.0f, 1.0f));
     glEnable(GL_CULL_FACE);
     world.each<Body>([&](Entity, const Body& b) {
         const bool box = b.shape == BodyShape::box;
