@@ -13,19 +13,20 @@ modeller, and the loader must read them as the glTF 2.0 spec says.
                     crate with normals and texture coordinates, a tree with two
                     primitives (32-bit indices, two materials); a LINES
                     primitive (edges, skipped by the loader with a warning); a
-                    texture whose image lies in a bufferView (not a real PNG:
-                    snow never decodes images); a camera node; interleaved
-                    vertex data (byteStride); foreign extras.
+                    texture whose PNG image (wood planks) lies in a bufferView;
+                    a camera node; interleaved vertex data (byteStride);
+                    foreign extras.
   plain.gltf        + plain.bin: a .gltf without a `scenes` array (all root
                     nodes are the scene), an external buffer, a node `matrix`,
-                    8-bit indices, a non-indexed primitive, and an image file
-                    that does not exist (a warning, not an error).
+                    8-bit indices, a non-indexed primitive, and a texture in an
+                    image file beside it (textures/bark.png).
 """
 
 import json
 import math
 import struct
 import sys
+import zlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -115,6 +116,17 @@ def cone(radius, height, segments):
     return pos, idx
 
 
+def png(rows):
+    """An 8-bit RGB PNG of `rows` (top row first, (r, g, b) per pixel)."""
+    def chunk(kind, payload):
+        return (struct.pack(">I", len(payload)) + kind + payload
+                + struct.pack(">I", zlib.crc32(kind + payload)))
+    header = struct.pack(">IIBBBBB", len(rows[0]), len(rows), 8, 2, 0, 0, 0)
+    raw = b"".join(b"\0" + bytes(c for px in row for c in px) for row in rows)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header)
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
 def glb(doc, data):
     text = json.dumps(doc, separators=(",", ":"), sort_keys=True).encode()
     text += b" " * (-len(text) % 4)
@@ -153,8 +165,10 @@ def tool_export():
     trunk_nrm = b.positions(trunk_n)
     trunk_ix = b.indices(trunk_i, UINT)
 
-    # Not a real PNG: the loader never decodes images.
-    image_view = b.view(b"\x89PNG\r\n\x1a\n" + b"not really an image")
+    # Wood: four planks across, a dark seam between them.
+    wood = [[(92, 58, 30) if x % 4 == 3 else (150 + 6 * (y % 3), 100, 56) for x in range(16)]
+            for y in range(16)]
+    image_view = b.view(png(wood))
 
     doc = {
         "asset": {"version": "2.0", "generator": "Khronos glTF Blender I/O v3.6.27"},
@@ -210,9 +224,12 @@ def tool_export():
 
 def plain():
     b = Buffer()
-    slab_p, slab_n, _, slab_i = box(4.0, 0.2, 3.0)
+    slab_p, slab_n, slab_t, slab_i = box(4.0, 0.2, 3.0)
     slab = b.positions(slab_p)
     slab_nrm = b.positions(slab_n)
+    flat_uv = [c for t in slab_t for c in t]
+    slab_uv = b.accessor(b.view(struct.pack("<%df" % len(flat_uv), *flat_uv), ARRAY_BUFFER),
+                         FLOAT, len(slab_t), "VEC2")
     slab_idx = b.indices(slab_i, UBYTE)
     # A non-indexed ramp: two triangles, six vertices in order.
     ramp = b.positions([[0, 0, 0], [2, 0, 1], [2, 1, 0], [0, 0, 0], [0, 0, 1], [2, 0, 1]])
@@ -224,7 +241,8 @@ def plain():
             {"name": "ramp", "mesh": 1, "translation": [3.0, 0.0, 0.0]},
         ],
         "meshes": [
-            {"primitives": [{"attributes": {"POSITION": slab, "NORMAL": slab_nrm},
+            {"primitives": [{"attributes": {"POSITION": slab, "NORMAL": slab_nrm,
+                                            "TEXCOORD_0": slab_uv},
                              "indices": slab_idx, "material": 0}]},
             {"primitives": [{"attributes": {"POSITION": ramp}}]},
         ],
@@ -236,13 +254,16 @@ def plain():
         "buffers": [{"byteLength": len(b.data), "uri": "plain.bin"}],
     }
     text = json.dumps(doc, indent=1, sort_keys=True) + "\n"
-    return text.encode(), bytes(b.data)
+    # Bark: grey-brown furrows running down.
+    bark = [[(70, 52, 40) if x % 3 == 0 else (112, 90, 70) for x in range(6)] for _ in range(6)]
+    return text.encode(), bytes(b.data), png(bark)
 
 
 def main():
     check = "--check" in sys.argv[1:]
-    plain_text, plain_bin = plain()
-    files = {"tool_export.glb": tool_export(), "plain.gltf": plain_text, "plain.bin": plain_bin}
+    plain_text, plain_bin, bark_png = plain()
+    files = {"tool_export.glb": tool_export(), "plain.gltf": plain_text, "plain.bin": plain_bin,
+             "textures/bark.png": bark_png}
     stale = []
     for name, data in files.items():
         path = OUT_DIR / name
@@ -250,7 +271,7 @@ def main():
             if not path.exists() or path.read_bytes() != data:
                 stale.append(name)
             continue
-        OUT_DIR.mkdir(parents=True, exist_ok=True)
+        path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(data)
         print("make_test_gltf: wrote assets/testdata/" + name)
     if stale:

@@ -5,11 +5,16 @@
 // lie inside the folder.
 #include "game/scene/scene_buffers.hpp"
 
+#include "game/scene/scene_accessor.hpp"
+#include "game/scene/scene_image.hpp"
+
 #include <snow/scene.hpp>
 
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <span>
 
 namespace snow {
 
@@ -139,9 +144,8 @@ std::optional<fs::path> file_inside(const fs::path& root, const std::string& rel
     return canon;
 }
 
-/// The first `length` bytes of a file inside the folder.
-std::vector<unsigned char> file_bytes(const fs::path& root, const std::string& uri,
-                                      std::uint64_t length, const std::string& field) {
+/// The file `uri` names inside the folder; throws naming `field` otherwise.
+fs::path fenced_file(const fs::path& root, const std::string& uri, const std::string& field) {
     std::string problem;
     const std::string relative = percent_decoded(uri, problem);
     if (problem.empty()) {
@@ -154,18 +158,28 @@ std::vector<unsigned char> file_bytes(const fs::path& root, const std::string& u
     if (!file) {
         scene_fail(field, "names '" + uri + "', which is not a file inside the scene's folder");
     }
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(*file, ec);
-    if (ec || size < length) {
-        scene_fail(field, "names '" + uri + "', which has " + std::to_string(size) +
-                              " bytes; the buffer's byteLength is " + std::to_string(length));
-    }
+    return *file;
+}
+
+/// The first `length` bytes of `file` (checked to hold at least that many).
+std::vector<unsigned char> file_bytes(const fs::path& file, const std::string& uri,
+                                      std::uint64_t length, const std::string& field) {
     std::vector<unsigned char> out(static_cast<std::size_t>(length));
-    std::ifstream in(*file, std::ios::binary);
+    std::ifstream in(file, std::ios::binary);
     if (!in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(length))) {
         scene_fail(field, "names '" + uri + "', which could not be read");
     }
     return out;
+}
+
+/// The size of `file`, or a failure naming `field`.
+std::uint64_t file_size(const fs::path& file, const std::string& uri, const std::string& field) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec) {
+        scene_fail(field, "names '" + uri + "', whose size could not be read");
+    }
+    return size;
 }
 
 void load_buffer(GltfBuffer& b, std::size_t i, const BufferSources& sources, const fs::path& root) {
@@ -203,15 +217,82 @@ void load_buffer(GltfBuffer& b, std::size_t i, const BufferSources& sources, con
                               "'), which a scene loaded from memory may not; embed it as a "
                               "data: URI or in a .glb");
     }
-    b.data = file_bytes(root, *b.uri, b.byte_length, field);
+    const fs::path file = fenced_file(root, *b.uri, field);
+    if (const std::uint64_t size = file_size(file, *b.uri, field); size < b.byte_length) {
+        scene_fail(field, "names '" + *b.uri + "', which has " + std::to_string(size) +
+                              " bytes; the buffer's byteLength is " +
+                              std::to_string(b.byte_length));
+    }
+    b.data = file_bytes(file, *b.uri, b.byte_length, field);
 }
 
-/// A warning when an image refers to something that is not there; images are
-/// never opened, so nothing else about them matters.
+/// Decodes image `i` from its bufferView, data: URI or file inside the folder.
+std::shared_ptr<const Image> decode_image(const GltfDocument& doc, std::size_t i,
+                                          const fs::path& root, std::uint64_t& texels) {
+    const std::string at = list_item("images", i);
+    const GltfImage& image = doc.images[i];
+    if (image.buffer_view) {
+        return std::make_shared<const Image>(
+            decode_png(buffer_view_bytes(doc, *image.buffer_view, at + ".bufferView"), at, texels));
+    }
+    if (!image.uri) {
+        scene_fail(at, "needs a uri or a bufferView");
+    }
+    const std::string field = at + ".uri";
+    std::vector<unsigned char> bytes;
+    if (image.uri->starts_with("data:")) {
+        bytes = data_uri_bytes(*image.uri, field);
+    } else if (root.empty()) {
+        scene_fail(field, "names an external file ('" + *image.uri +
+                              "'), which a scene loaded from memory may not; embed it as a "
+                              "data: URI or in a .glb");
+    } else {
+        const fs::path file = fenced_file(root, *image.uri, field);
+        const std::uint64_t size = file_size(file, *image.uri, field);
+        if (size > max_scene_buffer_bytes) {
+            scene_fail(field, "names '" + *image.uri + "', which has " + std::to_string(size) +
+                                  " bytes, more than the " +
+                                  std::to_string(max_scene_buffer_bytes) + " a file may have");
+        }
+        bytes = file_bytes(file, *image.uri, size, field);
+    }
+    return std::make_shared<const Image>(decode_png(bytes, field, texels));
+}
+
+/// Decodes every image a material takes as its base colour texture, once each.
+void load_textures(GltfDocument& doc, const fs::path& root) {
+    std::uint64_t texels = 0;
+    for (std::size_t m = 0; m < doc.materials.size(); ++m) {
+        const std::optional<std::uint64_t> texture = doc.materials[m].base_color_texture;
+        if (!texture) {
+            continue;
+        }
+        if (*texture >= doc.textures.size()) {
+            scene_fail(list_item("materials", m) + ".pbrMetallicRoughness.baseColorTexture.index",
+                       "must name one of the file's " + std::to_string(doc.textures.size()) +
+                           " textures (got " + std::to_string(*texture) + ")");
+        }
+        const std::string at = list_item("textures", *texture);
+        const std::optional<std::uint64_t> source = doc.textures[*texture].source;
+        if (!source || *source >= doc.images.size()) {
+            scene_fail(at + ".source", "must name one of the file's " +
+                                           std::to_string(doc.images.size()) + " images" +
+                                           (source ? " (got " + std::to_string(*source) + ")"
+                                                   : " (it has none, or only an extension's)"));
+        }
+        GltfImage& image = doc.images[*source];
+        if (!image.pixels) {
+            image.pixels = decode_image(doc, *source, root, texels);
+        }
+    }
+}
+
+/// A warning when an image no material draws refers to something that is not
+/// there; such an image is never opened, so nothing else about it matters.
 void check_image(const GltfImage& image, std::size_t i, const GltfDocument& doc,
                  const fs::path& root, std::vector<std::string>& warnings) {
     const std::string at = list_item("images", i);
-    const std::string ignored = "; ignored (snow uses no textures)";
+    const std::string ignored = "; ignored (no material takes it as a base colour texture)";
     if (image.buffer_view && *image.buffer_view >= doc.buffer_views.size()) {
         warnings.push_back(at + ".bufferView " + std::to_string(*image.buffer_view) +
                            " does not exist" + ignored);
@@ -262,8 +343,11 @@ void load_buffers(GltfDocument& doc, const BufferSources& sources,
     for (std::size_t i = 0; i < doc.buffers.size(); ++i) {
         load_buffer(doc.buffers[i], i, sources, root);
     }
+    load_textures(doc, root);
     for (std::size_t i = 0; i < doc.images.size(); ++i) {
-        check_image(doc.images[i], i, doc, root, warnings);
+        if (!doc.images[i].pixels) {
+            check_image(doc.images[i], i, doc, root, warnings);
+        }
     }
 }
 

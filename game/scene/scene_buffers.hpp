@@ -1,8 +1,9 @@
 /// @file scene_buffers.hpp
 /// @brief Fills every glTF buffer with its bytes (internal to snow::scene):
 /// from a base64 `data:` URI, from the .glb's BIN chunk, or from a file inside
-/// the scene's folder and nowhere else. Images are never read: the simulation
-/// and the renderer use base colours only.
+/// the scene's folder and nowhere else; and decodes the PNG images materials
+/// take as base colour textures, from the same places. Other images are never
+/// read.
 #pragma once
 
 #include "game/scene/scene_document.hpp"
@@ -24,8 +25,11 @@ struct BufferSources {
 /// max_scene_buffer_bytes in total). A URI may be a `data:` URI or a relative
 /// path that stays inside the folder (no absolute paths, schemes, backslashes
 /// or `..`; %-escapes are decoded first, symlinks resolved). Throws SceneError
-/// naming e.g. `buffers[0].uri`. Images whose files are missing or outside the
-/// folder only add a line to `warnings` (textures are not used).
+/// naming e.g. `buffers[0].uri`. Then decodes every image a material takes
+/// as its baseColorTexture into `doc.images[i].pixels` (PNG only, at most
+/// max_scene_texels in all); one that is missing, outside the folder or not a
+/// valid PNG throws naming e.g. `images[0].uri`. Other images whose files are
+/// missing or outside the folder only add a line to `warnings`.
 void load_buffers(GltfDocument& doc, const BufferSources& sources,
                   std::vector<std::string>& warnings);
 

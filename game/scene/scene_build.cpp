@@ -194,6 +194,8 @@ void add_renderables(SceneVisuals& visuals, const WorldNode& node) {
         r.normals = p.normals;
         r.indices = p.indices;
         r.color = p.color;
+        r.texture = p.texture;
+        r.texcoords = p.texcoords;
         visuals.meshes.push_back(std::move(r));
     }
 }

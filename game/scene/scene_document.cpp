@@ -34,6 +34,7 @@ constexpr Field<GltfAccessor> accessor_fields[] = {
 constexpr Field<GltfPrimitive> attribute_fields[] = {
     {"POSITION", &GltfPrimitive::position},
     {"NORMAL", &GltfPrimitive::normal},
+    {"TEXCOORD_0", &GltfPrimitive::texcoord},
 };
 
 constexpr Field<GltfPrimitive> primitive_fields[] = {
@@ -60,8 +61,21 @@ constexpr Field<GltfMesh> mesh_fields[] = {
      true},
 };
 
+constexpr Field<GltfMaterial> texture_info_fields[] = {
+    {"index", &GltfMaterial::base_color_texture, {}, true},
+    {"texCoord", &GltfMaterial::base_color_texcoord},
+};
+
 constexpr Field<GltfMaterial> pbr_fields[] = {
     {"baseColorFactor", &GltfMaterial::base_color, {0.0, 1.0}},
+    {"baseColorTexture",
+     +[](const Json& j, const std::string& field, GltfMaterial& m) {
+         read_fields(j, field, texture_info_fields, ignore, m);
+         if (m.base_color_texcoord != 0) {
+             scene_fail(field + ".texCoord", "must be 0 (only TEXCOORD_0 is read; got " +
+                                                 std::to_string(m.base_color_texcoord) + ")");
+         }
+     }},
 };
 
 constexpr Field<GltfMaterial> material_fields[] = {
@@ -73,6 +87,10 @@ constexpr Field<GltfMaterial> material_fields[] = {
                         "must have 4 numbers (got " + std::to_string(m.base_color.size()) + ")");
          }
      }},
+};
+
+constexpr Field<GltfTexture> texture_fields[] = {
+    {"source", &GltfTexture::source},
 };
 
 constexpr Field<GltfImage> image_fields[] = {
@@ -119,6 +137,7 @@ constexpr Field<GltfDocument> document_fields[] = {
     {"accessors", &read_nested<&GltfDocument::accessors, accessor_fields, ignore>},
     {"bufferViews", &read_nested<&GltfDocument::buffer_views, buffer_view_fields, ignore>},
     {"buffers", &read_nested<&GltfDocument::buffers, buffer_fields, ignore>},
+    {"textures", &read_nested<&GltfDocument::textures, texture_fields, ignore>},
     {"images", &read_nested<&GltfDocument::images, image_fields, ignore>},
 };
 

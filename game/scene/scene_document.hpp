@@ -7,7 +7,10 @@
 
 #include "game/scene/scene_fields.hpp"
 
+#include <snow/render.hpp>
+
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +51,7 @@ struct GltfAccessor {
 
 struct GltfPrimitive {
     std::optional<std::uint64_t> position, normal; ///< accessors of `attributes`
+    std::optional<std::uint64_t> texcoord;         ///< TEXCOORD_0, read with a texture only
     std::optional<std::uint64_t> indices;
     std::optional<std::uint64_t> material;
     std::uint32_t mode = gltf::mode_triangles;
@@ -59,11 +63,22 @@ struct GltfMesh {
 
 struct GltfMaterial {
     std::vector<double> base_color{1.0, 1.0, 1.0, 1.0}; ///< pbrMetallicRoughness.baseColorFactor
+    /// pbrMetallicRoughness.baseColorTexture: `index` into `textures`, and
+    /// `texCoord`, the TEXCOORD_n it reads (only 0 is supported).
+    std::optional<std::uint64_t> base_color_texture;
+    std::uint64_t base_color_texcoord = 0;
+};
+
+struct GltfTexture {
+    std::optional<std::uint64_t> source; ///< into `images`
 };
 
 struct GltfImage {
     std::optional<std::string> uri;
     std::optional<std::uint64_t> buffer_view;
+    /// Decoded by scene_buffers when a material takes it as its base colour
+    /// texture; null for an image nothing draws.
+    std::shared_ptr<const Image> pixels;
 };
 
 struct GltfNode {
@@ -90,6 +105,7 @@ struct GltfDocument {
     std::vector<GltfAccessor> accessors;
     std::vector<GltfBufferView> buffer_views;
     std::vector<GltfBuffer> buffers;
+    std::vector<GltfTexture> textures;
     std::vector<GltfImage> images;
 };
 

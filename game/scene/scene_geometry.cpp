@@ -103,19 +103,47 @@ glm::vec3 to_float3(const glm::dvec3& v, const std::string& field, const char* w
     return glm::vec3(v);
 }
 
-/// The material's baseColorFactor rgb (range and length checked when read).
-glm::vec3 material_color(const GltfDocument& doc, std::optional<std::uint64_t> material,
-                         const std::string& at) {
+/// The material `material` names, or null for glTF's default one.
+const GltfMaterial* material_of(const GltfDocument& doc, std::optional<std::uint64_t> material,
+                                const std::string& at) {
     if (!material) {
-        return glm::vec3(1.0f); // glTF's default material
+        return nullptr;
     }
     if (*material >= doc.materials.size()) {
         scene_fail(at + ".material", "must name one of the file's " +
                                          std::to_string(doc.materials.size()) + " materials (got " +
                                          std::to_string(*material) + ")");
     }
-    const std::vector<double>& f = doc.materials[*material].base_color;
-    return {static_cast<float>(f[0]), static_cast<float>(f[1]), static_cast<float>(f[2])};
+    return &doc.materials[*material];
+}
+
+/// The material's baseColorFactor rgb (range and length checked when read)
+/// and base colour texture, with the primitive's TEXCOORD_0 it needs.
+void apply_material(const GltfDocument& doc, const GltfPrimitive& prim, const std::string& at,
+                    WorldPrimitive& out) {
+    const GltfMaterial* m = material_of(doc, prim.material, at);
+    if (m == nullptr) {
+        return; // glTF's default material: white
+    }
+    out.color = {static_cast<float>(m->base_color[0]), static_cast<float>(m->base_color[1]),
+                 static_cast<float>(m->base_color[2])};
+    if (!m->base_color_texture) {
+        return;
+    }
+    // scene_buffers decoded it (the indices are checked there).
+    out.texture = doc.images[*doc.textures[*m->base_color_texture].source].pixels;
+    if (!prim.texcoord) {
+        scene_fail(at + ".attributes", "needs TEXCOORD_0: its material (materials[" +
+                                           std::to_string(*prim.material) +
+                                           "]) has a baseColorTexture");
+    }
+    out.texcoords = read_vec2_accessor(doc, *prim.texcoord, at + ".attributes.TEXCOORD_0");
+    if (out.texcoords.size() != out.positions.size()) {
+        scene_fail(at + ".attributes.TEXCOORD_0", "must have as many elements as POSITION (" +
+                                                      std::to_string(out.positions.size()) +
+                                                      ", got " +
+                                                      std::to_string(out.texcoords.size()) + ")");
+    }
 }
 
 /// Area-weighted vertex normals, for primitives that bring none.
@@ -177,7 +205,7 @@ WorldPrimitive world_primitive(const GltfDocument& doc, const GltfPrimitive& pri
                            std::to_string(out.indices.size()) + ")");
     }
     charge(budget.indices, out.indices.size(), max_scene_indices, at, "indices");
-    out.color = material_color(doc, prim.material, at);
+    apply_material(doc, prim, at, out);
 
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);

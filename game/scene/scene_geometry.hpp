@@ -8,9 +8,11 @@
 #include "systems/geometry/geometry.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,12 +25,15 @@ inline constexpr std::size_t max_scene_primitives = 1u << 16;
 inline constexpr std::size_t max_scene_vertices = 1u << 22;
 inline constexpr std::size_t max_scene_indices = 1u << 24;
 
-/// A mesh primitive in world space: triangles, unit normals per vertex.
+/// A mesh primitive in world space: triangles, unit normals per vertex, and
+/// its material's base colour (and texture).
 struct WorldPrimitive {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
-    std::vector<std::uint32_t> indices; ///< 3 per triangle, counter-clockwise seen from outside
-    glm::vec3 color{1.0f};              ///< material baseColorFactor (glTF default white)
+    std::vector<std::uint32_t> indices;   ///< 3 per triangle, counter-clockwise seen from outside
+    glm::vec3 color{1.0f};                ///< material baseColorFactor (glTF default white)
+    std::shared_ptr<const Image> texture; ///< the material's baseColorTexture, if it has one
+    std::vector<glm::vec2> texcoords;     ///< TEXCOORD_0 per vertex, with a texture only
 };
 
 /// One node the scene instances, with its world transform applied.

@@ -65,6 +65,8 @@ struct SpectralSnow {
     float start_distance = 25.0f; ///< where the particle LOD ends
 };
 
+struct Image;
+
 /// A triangle mesh in world space.
 struct MeshRenderable {
     std::string name;
@@ -72,6 +74,12 @@ struct MeshRenderable {
     std::vector<glm::vec3> normals; ///< per vertex, same count as positions
     std::vector<std::uint32_t> indices;
     glm::vec3 color{0.6f, 0.6f, 0.6f};
+    /// A base colour texture, multiplied by `color` (glTF's baseColorTexture);
+    /// meshes sharing an image share one. Null: `color` alone.
+    std::shared_ptr<const Image> texture;
+    /// Per vertex with a texture, same count as positions: (0, 0) is the
+    /// image's top left corner (glTF's convention), repeating beyond [0, 1].
+    std::vector<glm::vec2> texcoords;
 };
 
 /// A coloured point light ([WF §5] uses three).

@@ -72,8 +72,9 @@ struct SceneLoadResult {
     SceneVisuals visuals; ///< meshes, lights, camera, sky: what the renderer draws
     std::string error;
     std::string name; ///< the glTF scene's name, else the file's stem
-    /// What the loader skipped ("<file>: <field> <problem>": a missing texture
-    /// image, a non-triangle primitive, ...); each is also printed to stderr.
+    /// What the loader skipped ("<file>: <field> <problem>": a missing image
+    /// no material draws, a non-triangle primitive, ...); each is also printed
+    /// to stderr.
     std::vector<std::string> warnings;
 };
 

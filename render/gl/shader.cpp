@@ -132,6 +132,9 @@ Program& ProgramCache::get(std::string_view vertex_file, std::string_view fragme
     if (const int loc = program.uniform("sun_shadow_map"); loc >= 0) {
         glUniform1i(loc, texture_unit::sun_shadow);
     }
+    if (const int loc = program.uniform("base_color_texture"); loc >= 0) {
+        glUniform1i(loc, texture_unit::base_color);
+    }
     return programs_.emplace(std::move(key), std::move(program)).first->second;
 }
 

@@ -60,6 +60,8 @@ inline constexpr int fog_table = 1; ///< sampler1D fog_table: layered fog E(y) [
 /// sampler2DShadow sun_shadow_map: the sun's cascades side by side [CSM]; 2–4
 /// are the effect passes' and the snow surfaces' own.
 inline constexpr int sun_shadow = 5;
+/// sampler2D base_color_texture: a scene mesh's glTF base colour texture.
+inline constexpr int base_color = 6;
 } // namespace texture_unit
 
 /// Binding point of the "Frame" uniform block.

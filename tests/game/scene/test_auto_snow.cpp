@@ -84,8 +84,11 @@ fs::path with_auto_extra(const TempDir& dir, const std::string& name, bool at_as
     owner["extras"]["snow"] = nlohmann::json::parse(snow);
     const fs::path out = dir.scene_dir() / name;
     dir.write(out, is_glb_file ? glb(doc.dump(), bin) : doc.dump());
-    if (!is_glb_file) {
+    if (!is_glb_file) { // its buffer and its texture beside it
         fs::copy_file(test_data_path("plain.bin"), dir.scene_dir() / "plain.bin",
+                      fs::copy_options::overwrite_existing);
+        fs::create_directories(dir.scene_dir() / "textures");
+        fs::copy_file(test_data_path("textures/bark.png"), dir.scene_dir() / "textures/bark.png",
                       fs::copy_options::overwrite_existing);
     }
     return out;

@@ -333,6 +333,10 @@ TEST(SceneTestData, ExporterStyleGlbLoadsWithItsHierarchy) {
     // The tree sits at yard + (−3, 0, 2); the crown's apex is 3.5 m up.
     EXPECT_TRUE(has_point(*m.at("Tree#1"), {-2.0f, 3.5f, 1.0f}));
     EXPECT_NEAR(m.at("Tree")->color.r, 0.4f, 1e-6f);
+    // The crate's wood is the PNG in a bufferView of the BIN chunk (16 x 16).
+    ASSERT_NE(m.at("Crate")->texture, nullptr);
+    EXPECT_EQ(m.at("Crate")->texture->height, 16);
+    EXPECT_EQ(m.at("Crate")->texcoords.size(), m.at("Crate")->positions.size());
     EXPECT_NEAR(m.at("Ground")->color.g, 0.5f, 1e-6f);
     r.sim->run(10);
     EXPECT_TRUE(r.sim->mass().balanced());
@@ -342,11 +346,14 @@ TEST(SceneTestData, PlainGltfWithoutScenesOrExtras) {
     const SceneLoadResult r = load_scene_file(test_data_path("plain.gltf"));
     ASSERT_NE(r.sim, nullptr) << r.error;
     EXPECT_EQ(r.name, "plain");
-    ASSERT_EQ(r.warnings.size(), 1u) << all_warnings(r);
-    EXPECT_TRUE(has_warning(r, "plain.gltf: images[0].uri 'textures/bark.png' is not a file "
-                               "inside the scene's folder; ignored"));
+    EXPECT_TRUE(r.warnings.empty()) << all_warnings(r);
     const auto m = meshes_by_name(r.visuals);
     ASSERT_EQ(m.size(), 2u);
+    // The slab's bark comes from textures/bark.png beside the file (6 x 6).
+    ASSERT_NE(m.at("slab")->texture, nullptr);
+    EXPECT_EQ(m.at("slab")->texture->width, 6);
+    EXPECT_EQ(m.at("slab")->texcoords.size(), m.at("slab")->positions.size());
+    EXPECT_EQ(m.at("ramp")->texture, nullptr);
     // The slab's matrix moves it by (0.5, 1, −0.5); it is 4 × 0.2 × 3 m.
     EXPECT_TRUE(has_point(*m.at("slab"), {2.5f, 1.1f, 1.0f}));
     // The non-indexed ramp: six vertices, in order.

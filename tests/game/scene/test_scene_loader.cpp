@@ -516,8 +516,8 @@ TEST(SceneLoaderErrors, FileAccessStaysInsideTheSceneFolder) {
                  {"test.gltf: buffers[0].uri names an external file"});
 }
 
-TEST(SceneLoader, MissingOrUnreadableImagesAreWarningsNotErrors) {
-    // Snow needs no textures: images are never opened or decoded.
+TEST(SceneLoader, MissingOrUnreadableImagesNoMaterialUsesAreWarningsNotErrors) {
+    // Only a material's base colour texture is decoded; other images are never opened.
     const std::string text = replaced(mesh_gltf(quad_xyz, quad_indices), "\"buffers\"",
                                       R"("images": [{"uri": "missing.png"}, {"uri": "../up.png"},
                                {"uri": "data:image/png;base64,notapng"}, {"bufferView": 9}],
@@ -529,7 +529,8 @@ TEST(SceneLoader, MissingOrUnreadableImagesAreWarningsNotErrors) {
     ASSERT_NE(r.sim, nullptr) << r.error;
     ASSERT_EQ(r.warnings.size(), 3u);
     EXPECT_TRUE(has_warning(r, "img.gltf: images[0].uri 'missing.png' is not a file inside the "
-                               "scene's folder; ignored (snow uses no textures)"));
+                               "scene's folder; ignored (no material takes it as a base colour "
+                               "texture)"));
     EXPECT_TRUE(has_warning(r, "images[1].uri '../up.png' must not leave the scene's folder"));
     EXPECT_TRUE(has_warning(r, "images[3].bufferView 9 does not exist"));
 }

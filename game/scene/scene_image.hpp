@@ -1,0 +1,25 @@
+/// @file scene_image.hpp
+/// @brief Decodes the PNG images a scene's materials use as base colour
+/// textures (internal to snow::scene), with stb_image, which snow_render
+/// already reads PNGs with (Debian's libstb-dev).
+#pragma once
+
+#include <snow/render.hpp>
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace snow {
+
+/// Most texels all of a scene's textures may have together (RGBA8: 64 MiB),
+/// checked from each PNG's header before it is decoded.
+inline constexpr std::uint64_t max_scene_texels = 1u << 24;
+
+/// The PNG in `bytes` as RGBA8, rows top first. `texels` counts the scene's
+/// texels so far and grows by this image's. Throws SceneError naming `field`
+/// when the bytes are not a PNG, not a valid one, or too large.
+[[nodiscard]] Image decode_png(std::span<const unsigned char> bytes, const std::string& field,
+                               std::uint64_t& texels);
+
+} // namespace snow
