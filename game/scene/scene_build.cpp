@@ -138,10 +138,10 @@ SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
 }
 
 /// The node's collider, if it declares one; null otherwise.
-ColliderId add_collider(Simulation& sim, const WorldNode& node, ColliderKind kind) {
-    switch (kind) {
+ColliderId add_collider(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
+    switch (*role.collider) {
     case ColliderKind::box:
-        return sim.add_box(node.bounds);
+        return sim.add_box(node.bounds, role.porosity);
     case ColliderKind::sphere: {
         const glm::vec3 half = 0.5f * node.bounds.size();
         return sim.add_sphere(0.5f * (node.bounds.min + node.bounds.max),
@@ -245,6 +245,9 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
             scene_fail(path + ".compaction",
                        "is for moving bodies only (a motion, a snowball or a capsule)");
         }
+        if (role.porosity != 0.0f && (role.collider != ColliderKind::box || is_body(role))) {
+            scene_fail(path + ".porosity", "is for box colliders that stand still (a fence)");
+        }
         if (role.collider == ColliderKind::mesh && is_body(role)) {
             scene_fail(path + ".collider", "a moving body must be a sphere, box or capsule");
         }
@@ -275,7 +278,7 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
             through_facade(prefix, [&] { return add_body(*sim, node, role); });
         } else if (role.collider) {
             owner = through_facade(prefix + "collider: ",
-                                   [&] { return add_collider(*sim, node, *role.collider); });
+                                   [&] { return add_collider(*sim, node, role); });
         }
         if (surfaces[i]) {
             through_facade(prefix, [&] { return sim->add_surface(*surfaces[i], owner); });

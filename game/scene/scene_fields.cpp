@@ -16,16 +16,16 @@ std::string range_rule(const Range& r) {
     const bool has_min = std::isfinite(r.min), has_max = std::isfinite(r.max);
     if (has_min && has_max) {
         return std::string(r.min_exclusive ? "in (" : "in [") + number_text(r.min) + ", " +
-               number_text(r.max) + "]";
+               number_text(r.max) + (r.max_exclusive ? ")" : "]");
     }
     if (has_min) {
         return (r.min_exclusive ? "> " : ">= ") + number_text(r.min);
     }
-    return has_max ? "<= " + number_text(r.max) : "";
+    return has_max ? (r.max_exclusive ? "< " : "<= ") + number_text(r.max) : "";
 }
 
 bool in_range(double v, const Range& r) {
-    return (r.min_exclusive ? v > r.min : v >= r.min) && v <= r.max;
+    return (r.min_exclusive ? v > r.min : v >= r.min) && (r.max_exclusive ? v < r.max : v <= r.max);
 }
 
 double finite_number(const Json& j, const std::string& field, const Range& range, double limit) {

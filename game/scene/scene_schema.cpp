@@ -62,6 +62,7 @@ constexpr Field<NodeSnow> node_snow_fields[] = {
     {"snowball", &NodeSnow::snowball},
     {"on_ground", &NodeSnow::on_ground},
     {"compaction", &NodeSnow::compaction, between(0, 1)},
+    {"porosity", &NodeSnow::porosity, from_below(0, 1)},
 };
 
 // --- scenes[s].extras.snow ---------------------------------------------------

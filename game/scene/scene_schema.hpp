@@ -27,6 +27,7 @@ struct NodeSnow {
     bool snowball = false;   ///< a moving sphere that picks up snow
     bool on_ground = false;  ///< the body stands on the bare ground under it
     float compaction = 0.0f; ///< the body packs this fraction of the snow in its way
+    float porosity = 0.0f;   ///< a box collider's open share (a slat fence)
 };
 
 /// A node whose collider moves (a path, a snowball, or a capsule) is a body.

@@ -73,7 +73,9 @@ class Simulation {
     void set_body_motion(BodyId body, const BodyMotion& motion);
     /// Puts a snowball's snow back on the cell under it; returns the units.
     std::uint64_t drop_snowball(BodyId body);
-    ColliderId add_box(const Aabb& box);
+    /// A box collider; `porosity` in [0, 1) makes it a slat fence the wind
+    /// blows through against a pressure loss (0: solid).
+    ColliderId add_box(const Aabb& box, float porosity = 0.0f);
     /// Moves a box collider to `box`. A box that carries a snow surface cannot
     /// move (its snow would hang in the air): remove it and add a new one.
     void move_box(ColliderId box, const Aabb& to);

@@ -355,10 +355,11 @@ std::uint64_t Simulation::drop_snowball(BodyId body) {
     return units;
 }
 
-ColliderId Simulation::add_box(const Aabb& box) {
+ColliderId Simulation::add_box(const Aabb& box, float porosity) {
     throw_if(validate(box));
+    throw_if(validate_porosity(porosity));
     const Entity id = impl_->world.create();
-    impl_->world.add<BoxCollider>(id, BoxCollider{box});
+    impl_->world.add<BoxCollider>(id, BoxCollider{box, porosity});
     ++impl_->world.resource<SourceVersions>().solids;
     impl_->prepare();
     return id_of<ColliderId>(id);

@@ -31,6 +31,9 @@ std::uint64_t source_digest(const World& w) {
         h.value(e.bits);
         out(b.box.min);
         out(b.box.max);
+        if (b.porosity != 0.0f) { // a solid box hashes as before porosity
+            h.value(b.porosity);
+        }
     });
     w.each<SphereCollider>([&](Entity e, const SphereCollider& s) {
         h.value(e.bits);

@@ -46,8 +46,8 @@ std::string problem_in(const Range& r, N v) {
     } else if (r.min_exclusive ? !(v > lo) : v < lo) {
         rule = r.min_exclusive ? "> " : ">= ";
         rule += bound_text(lo);
-    } else if (v > hi) {
-        rule = "<= ";
+    } else if (r.max_exclusive ? !(v < hi) : v > hi) {
+        rule = r.max_exclusive ? "< " : "<= ";
         rule += bound_text(hi);
     } else {
         return {};

@@ -44,6 +44,7 @@ struct Range {
     double min = -unbounded;
     double max = unbounded;
     bool min_exclusive = false; ///< true: > min; false: >= min
+    bool max_exclusive = false; ///< true: < max; false: <= max
 };
 inline constexpr Range positive{0.0, unbounded, true};
 inline constexpr Range non_negative{0.0};
@@ -58,6 +59,10 @@ inline constexpr Range non_negative{0.0};
 }
 [[nodiscard]] constexpr Range positive_up_to(double max) {
     return {0.0, max, true};
+}
+/// [min, max): a share that cannot be whole, such as a fence's porosity.
+[[nodiscard]] constexpr Range from_below(double min, double max) {
+    return {min, max, false, true};
 }
 
 /// What is wrong with `v` under `r` ("must be > 0 (got -1)": the bound it

@@ -14,6 +14,10 @@ namespace snow {
 /// along the face (builds drifts at windward bases, [WF §4]).
 struct BoxCollider {
     Aabb box;
+    /// Share of its area open to the air (a slat fence: 0.5); 0 = solid. The
+    /// wind field lets air through a porous box against a pressure loss
+    /// (docs/wind_field.md "Porous fences"); flakes meet it as a box.
+    float porosity = 0.0f;
 };
 
 /// Sphere: a flake that enters is eliminated ([WF §4], the snowman).

@@ -17,4 +17,10 @@ Invalid validate(const Aabb& box) {
     return e;
 }
 
+Invalid validate_porosity(float porosity) {
+    Invalid e;
+    check_field(e, "box", "porosity", from_below(0.0, 1.0), porosity);
+    return e;
+}
+
 } // namespace snow

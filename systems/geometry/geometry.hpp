@@ -28,5 +28,7 @@ inline constexpr FieldRule<Aabb> aabb_fields[] = {
 void check_box(Invalid& e, std::string_view prefix, const Aabb& box);
 /// A box collider's extent (fields "box.min", "box.max").
 [[nodiscard]] Invalid validate(const Aabb& box);
+/// `box.porosity` in [0, 1): a porous box still stops some air.
+[[nodiscard]] Invalid validate_porosity(float porosity);
 
 } // namespace snow

@@ -7,6 +7,7 @@
 // filled too (docs/wind_field.md "Obstacles").
 #include "systems/geometry/colliders.hpp"
 #include "systems/snowpack/snow_surface.hpp"
+#include "systems/wind/fence_resistance.hpp"
 #include "systems/wind/wind_field_solver.hpp"
 
 #include <algorithm>
@@ -51,6 +52,7 @@ bool cell_of(const WindField& f, const glm::vec3& p, std::int32_t (&cell)[3]) {
 struct Marker {
     const WindField& f;
     Vector<std::uint8_t>& solid;
+    Vector<float>& resistance;
     /// Triangle samples left: 64 per field cell bounds the work of any mesh
     /// (bounded work, docs/reliability.md). Meshes that would need more (a
     /// fuzz finding: 16 384 kilometre-wide triangles took minutes) mark what
@@ -70,13 +72,24 @@ struct Marker {
         return cover(lo, hi, f.origin[a], f.inv_cell[a], static_cast<std::int32_t>(f.n[a]));
     }
 
-    void box(const Aabb& b) {
+    /// A solid box fills its cells; a porous one (a fence) lets air through
+    /// them against its pressure loss.
+    void box(const BoxCollider& c) {
+        const Aabb& b = c.box;
+        const auto loss =
+            static_cast<float>(c.porosity > 0.0f ? fence_pressure_loss(c.porosity) : 0.0);
         const CellRange x = range(0, b.min.x, b.max.x), y = range(1, b.min.y, b.max.y),
                         z = range(2, b.min.z, b.max.z);
         for (std::int32_t k = z.lo; k < z.hi; ++k) {
             for (std::int32_t j = y.lo; j < y.hi; ++j) {
                 for (std::int32_t i = x.lo; i < x.hi; ++i) {
-                    mark(i, j, k);
+                    if (loss > 0.0f) {
+                        float& r = resistance[static_cast<std::size_t>(
+                            f.centre.index(i + 1, j + 1, k + 1))];
+                        r = std::max(r, loss);
+                    } else {
+                        mark(i, j, k);
+                    }
                 }
             }
         }
@@ -250,8 +263,9 @@ void fill_enclosed(const WindField& f, WindFieldSolver& s) {
 
 void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s) {
     s.solid.assign(f.centre.size(), 0);
-    Marker m{f, s.solid};
-    w.each<BoxCollider>([&](Entity, const BoxCollider& b) { m.box(b.box); });
+    s.resistance.assign(f.centre.size(), 0.0f);
+    Marker m{f, s.solid, s.resistance};
+    w.each<BoxCollider>([&](Entity, const BoxCollider& b) { m.box(b); });
     w.each<SphereCollider>([&](Entity, const SphereCollider& s) { m.sphere(s); });
     w.each<MeshCollider>([&](Entity, const MeshCollider& mesh) {
         for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {

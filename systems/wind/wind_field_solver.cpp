@@ -598,6 +598,17 @@ void project(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, std::uin
     enforce(f, s, inflow, sides);
 }
 
+/// The porous cells' momentum sink, du/dt = −drag·|u|·u [Wil85], taken
+/// implicitly over dt (u / (1 + drag·|u|·dt)): it slows the air, never turns it.
+void resist(WindField& f, const WindFieldSolver& s, float dt) {
+    for (const int a : {0, 2}) {
+        for (std::size_t q = 0; q < s.porous_faces[a].size(); ++q) {
+            float& u = f.velocity[a][static_cast<std::size_t>(s.porous_faces[a][q])];
+            u = u / (1.0f + s.porous_drag[a][q] * std::abs(u) * dt);
+        }
+    }
+}
+
 } // namespace
 
 std::uint8_t inflow_sides(const glm::vec3& wind) {
@@ -612,12 +623,15 @@ std::uint8_t inflow_sides(const glm::vec3& wind) {
 void reserve_solver(const WindField& f, WindFieldSolver& s) {
     const std::size_t cells = f.centre.size();
     s.solid.reserve(cells);
+    s.resistance.reserve(cells);
     s.reach.reserve(cells); // a cell is pushed at most once
     s.ground_cells.reserve(std::size_t{f.n[0]} * f.n[2]);
     s.inv_diag.reserve(cells);
     s.divergence.reserve(cells);
     for (int a = 0; a < 3; ++a) {
         s.closed[a].reserve(f.face[a].size()); // at most every face
+        s.porous_faces[a].reserve(a == 1 ? 0 : f.face[a].size());
+        s.porous_drag[a].reserve(a == 1 ? 0 : f.face[a].size());
         s.advected[a].reserve(f.face[a].size());
     }
     for (int colour = 0; colour < 2; ++colour) {
@@ -633,16 +647,23 @@ void apply_obstacles(WindField& f, WindFieldSolver& s) {
     for (int a = 0; a < 3; ++a) {
         const Lattice& l = f.face[a];
         s.closed[a].clear();
+        s.porous_faces[a].clear();
+        s.porous_drag[a].clear();
         s.advected[a].assign(l.size(), 0.0f);
         const std::int32_t up = c.stride(a);
+        const float per_cell = 0.25f * f.inv_cell[a];
         for (std::int32_t k = 0; k < l.dim[2]; ++k) {
             for (std::int32_t j = 0; j < l.dim[1]; ++j) {
                 const std::int32_t row = l.index(0, j, k), below = c.index(0, j, k);
                 for (std::int32_t i = 0; i < l.dim[0]; ++i) {
                     const bool shut = s.solid[below + i] != 0 || s.solid[below + i + up] != 0;
+                    const float loss = s.resistance[below + i] + s.resistance[below + i + up];
                     if (shut) {
                         s.closed[a].push_back(row + i);
                         f.velocity[a][static_cast<std::size_t>(row + i)] = 0.0f;
+                    } else if (loss > 0.0f && a != 1) {
+                        s.porous_faces[a].push_back(row + i);
+                        s.porous_drag[a].push_back(loss * per_cell);
                     }
                 }
             }
@@ -678,6 +699,7 @@ void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, 
             slide_over_ground(f, s, a, f.velocity[a]);
             diffuse(f, a, f.velocity[a], s.advected[a], mix);
         }
+        resist(f, s, dt);
         enforce(f, s, inflow, sides);
         project(f, s, inflow, sides, f.def.pressure_iterations);
     }

@@ -40,6 +40,14 @@ struct WindFieldSolver {
     std::uint64_t built_from_solids = 0;   ///< SourceVersions::solids it was built from
     std::uint64_t built_from_surfaces = 0; ///< SourceVersions::surfaces it was built from
     Vector<std::uint8_t> solid;            ///< per cell of the centre lattice (ghosts 0)
+    /// Per cell of the centre lattice: the pressure-loss coefficient of the
+    /// porous box filling it (fence_pressure_loss), 0 for open air.
+    Vector<float> resistance;
+    /// Per horizontal component (0: u, 2: w; 1 stays empty): the faces beside
+    /// a porous cell and their drag, (k_lo + k_hi) / (4·cell) per metre of
+    /// air passed: the fence's loss spread over the cell it fills [Wil85].
+    Vector<std::int32_t> porous_faces[3];
+    Vector<float> porous_drag[3];
     /// Per column (x fastest): how many cells from the bottom the ground
     /// fills (0: none); the top one reads as the air above it.
     Vector<std::int32_t> ground_cells;

@@ -374,6 +374,18 @@ TEST(SceneLoaderErrors, WrongExtrasTypesAndUnknownFields) {
     }
     expect_error(with(R"({"snow": {"collider": "box", "compaction": 0.5}})"),
                  {"nodes[0].extras.snow.compaction is for moving bodies only"});
+    // A fence's porosity: [0, 1), and only on a box that stands still.
+    for (const char* bad : {"-0.1", "1", "\"half\""}) {
+        expect_error(with(std::string(R"({"snow": {"collider": "box", "porosity": )") + bad + "}}"),
+                     {"nodes[0].extras.snow.porosity must be"});
+    }
+    expect_error(with(R"({"snow": {"collider": "sphere", "porosity": 0.5}})"),
+                 {"nodes[0].extras.snow.porosity is for box colliders that stand still"});
+    const SceneLoadResult fence = with(R"({"snow": {"collider": "box", "porosity": 0.5}})");
+    ASSERT_NE(fence.sim, nullptr) << fence.error;
+    world_of(*fence.sim).each<BoxCollider>([](Entity, const BoxCollider& b) {
+        EXPECT_EQ(b.porosity, 0.5f);
+    });
     const SceneLoadResult packing =
         with(R"({"snow": {"collider": "capsule", "on_ground": true, "compaction": 0.5}})");
     ASSERT_NE(packing.sim, nullptr) << packing.error;

@@ -33,8 +33,8 @@ std::vector<Probe<float>> probes(const Range& r, float) {
     }
     if (std::isfinite(r.max)) {
         const auto hi = static_cast<float>(r.max);
-        p.push_back({std::nextafter(hi, inf), false});
-        p.push_back({hi, true});
+        p.push_back({r.max_exclusive ? hi : std::nextafter(hi, inf), false});
+        p.push_back({r.max_exclusive ? std::nextafter(hi, -inf) : hi, true});
     }
     return p;
 }
