@@ -63,7 +63,9 @@ frame=(--headless --frames 1 --size "$size" --warmup $((ticks - 2)) --camera fly
     --export "$out/snow.glb" >"$out/snow_run.log"
 "$build/game/snow_game" --scene "$out/scene.gltf" "${frame[@]}" --aov --out "$out/ours" >"$out/ours.log"
 "$build/game/snow_game" --scene "$out/scene_lamps.gltf" "${frame[@]}" --out "$out/ours_lamps" >"$out/ours_lamps.log"
-frames=("$out/ours/frame_00000.png" "$out/ours_lamps/frame_00000.png")
+"$build/game/snow_game" --scene "$out/scene.gltf" "${frame[@]}" --no-detail-normals --no-sparkle \
+    --out "$out/ours_plain" >"$out/ours_plain.log"
+frames=("$out/ours/frame_00000.png" "$out/ours_lamps/frame_00000.png" "$out/ours_plain/frame_00000.png")
 if [ -n "$before_build" ]; then
     git show "$before_commit:assets/scenes/village_effects.gltf" >"$out/village_effects_before.gltf"
     "$python" scripts/cycles_scene.py "$out/village_effects_before.gltf" "$out/scene_before.gltf" --keep-lamps

@@ -91,6 +91,8 @@ int play(GameOptions opt) {
         settings.body_snow = 0.0f;
     }
     settings.min_snow_depth = opt.min_snow_depth.value_or(settings.min_snow_depth);
+    settings.detail_normals = opt.detail_normals;
+    settings.sparkle = opt.sparkle;
     renderer = std::make_unique<Renderer>(*context, settings);
     std::printf("snow_game: %s, %s (%s), %s camera\n", window ? "window" : "headless",
                 renderer->gl_description().c_str(), std::string(context->name()).c_str(),

@@ -28,6 +28,8 @@ constexpr const char* game_usage_head = R"(usage: snow_game [options]
   --walk-once-at F    the player takes the scene walker's place: it waits at its
                       path's start until frame F, then walks the path once
   --bare-meshes       meshes keep their colour: only the simulated snow is white
+  --no-detail-normals the snow without its world-anchored detail normals
+  --no-sparkle        the snow without glints of the sun
   --aov               headless: beside each frame_N.png also frame_N_snow.png (white
                       where snow covers the pixel) and frame_N_shadow.png (white
                       where the sun's shadow falls; black without a sun)
@@ -109,6 +111,10 @@ bool read_flag(std::string_view f, cli::ArgReader& args, GameOptions& o) {
         o.aov = true;
     } else if (f == "--bare-meshes") {
         o.bare_meshes = true;
+    } else if (f == "--no-detail-normals") {
+        o.detail_normals = false;
+    } else if (f == "--no-sparkle") {
+        o.sparkle = false;
     } else if (f == "--min-snow-depth") {
         o.min_snow_depth = static_cast<float>(parse_positive(f, args.value(), 10.0));
     } else if (f == "--look-from") {

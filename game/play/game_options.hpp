@@ -38,8 +38,10 @@ struct GameOptions {
     /// a path): it stands at the path's start until this frame, then walks
     /// the path once and stops (a trail cut once, in the player's tread).
     std::optional<std::uint64_t> walk_once_at;
-    bool bare_meshes = false; ///< meshes keep their colour: only simulated snow is white
-    bool aov = false;         ///< headless: each frame's snow and sun-shadow masks beside it
+    bool bare_meshes = false;   ///< meshes keep their colour: only simulated snow is white
+    bool aov = false;           ///< headless: each frame's snow and sun-shadow masks beside it
+    bool detail_normals = true; ///< RenderSettings::detail_normals (off: the Cycles comparison)
+    bool sparkle = true;        ///< RenderSettings::sparkle
     std::optional<float> min_snow_depth; ///< renderer: thinner snow shows the bare top (m)
     std::optional<glm::vec3> look_from;  ///< replaces the scene camera's position
     std::optional<glm::vec3> look_at;    ///< replaces the scene camera's target
