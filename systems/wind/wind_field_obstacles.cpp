@@ -65,9 +65,11 @@ struct Marker {
         2.0f * std::sqrt(static_cast<float>(f.n[0] * f.n[0] + f.n[1] * f.n[1] + f.n[2] * f.n[2])) +
         2.0f;
 
-    void mark(std::int32_t i, std::int32_t j, std::int32_t k) {
-        solid[static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1))] = 1;
+    /// Index in the centre lattice (ghosts included) of grid cell (i, j, k).
+    [[nodiscard]] std::size_t at(std::int32_t i, std::int32_t j, std::int32_t k) const {
+        return static_cast<std::size_t>(f.centre.index(i + 1, j + 1, k + 1));
     }
+    void mark(std::int32_t i, std::int32_t j, std::int32_t k) { solid[at(i, j, k)] = 1; }
     [[nodiscard]] CellRange range(int a, float lo, float hi) const {
         return cover(lo, hi, f.origin[a], f.inv_cell[a], static_cast<std::int32_t>(f.n[a]));
     }
@@ -84,9 +86,7 @@ struct Marker {
             for (std::int32_t j = y.lo; j < y.hi; ++j) {
                 for (std::int32_t i = x.lo; i < x.hi; ++i) {
                     if (loss > 0.0f) {
-                        float& r = resistance[static_cast<std::size_t>(
-                            f.centre.index(i + 1, j + 1, k + 1))];
-                        r = std::max(r, loss);
+                        resistance[at(i, j, k)] = std::max(resistance[at(i, j, k)], loss);
                     } else {
                         mark(i, j, k);
                     }

@@ -2,11 +2,10 @@
 /// @brief Snow blowing at a fence: a fetch of fresh snow upwind, bare ground
 /// round a fence of height H across the wind, a steady wind through a field
 /// that lets air through the fence by its porosity [Wil85]. What the tests
-/// hold to: a porous fence slows the air in its lee and the flux drops snow
-/// there; with no fence it passes (docs/wind_field.md "Porous fences").
+/// hold to: a porous fence slows the air in its lee and the snow the wind
+/// carries stops round it; with no fence it passes (docs/wind_field.md
+/// "Porous fences": where it stops, and why not yet in the lee).
 #pragma once
-
-#include <vector>
 
 namespace snow {
 
@@ -30,8 +29,6 @@ struct FenceDriftResult {
     double windward_gain = 0.0;
     /// Snow the fetch lost (kg/m): what the wind carried in all.
     double fetch_loss = 0.0;
-    /// Depth gained (m, mean over the width) per 0.5 H bin from −5 H to 15 H.
-    std::vector<double> profile;
     bool balanced = true; ///< the ledger held every tick
 };
 
