@@ -111,6 +111,11 @@ struct WindFieldDef {
     std::uint32_t sample_every = 32;       ///< ticks between a flake's samples (held_wind.hpp)
     std::uint32_t pressure_iterations = 8; ///< red-black SOR sweeps per step (fixed)
     float eddy_viscosity = 0.1f;           ///< turbulent mixing (m²/s); 0: none
+    /// The sides at z min and z max are walls the air slides along, as in a
+    /// wind tunnel along x: the field is a slice of something that runs on
+    /// across the wind (a long fence, a street). The wind's z part is not let
+    /// in. false: those sides are open, or take the wind in.
+    bool tunnel = false;
 };
 
 /// Settings of the transport; see Simulation::set_wind_transport(). The

@@ -14,9 +14,10 @@
 namespace snow {
 
 inline constexpr std::array<char, 8> snapshot_magic{'S', 'N', 'O', 'W', 'S', 'N', 'A', 'P'};
-/// 2: the transport's settings are its roughness and read height (the
-/// saltation flux); format 1 held a threshold speed, a rate and a fraction.
-inline constexpr std::uint32_t snapshot_format = 2;
+/// 3: a wind field's settings say whether it is a tunnel. 2: the
+/// transport's settings are its roughness and read height (the saltation
+/// flux); format 1 held a threshold speed, a rate and a fraction.
+inline constexpr std::uint32_t snapshot_format = 3;
 /// Bytes before the payload: the magic, the format version, the payload length.
 inline constexpr std::size_t snapshot_header_bytes = snapshot_magic.size() + 4 + 8;
 /// Offset of the payload length (a little-endian uint64) in the header.

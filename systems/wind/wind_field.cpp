@@ -92,6 +92,7 @@ void transport_record(Io& io, Transport& t) {
 
 void save_state(ByteWriter& out, const WindField& f) {
     def_record(out, f.def);
+    out(f.def.tunnel);
     bool transport = f.transport.has_value();
     field_state_record(out, f, transport);
     if (transport) {
@@ -101,6 +102,7 @@ void save_state(ByteWriter& out, const WindField& f) {
 
 void load_def(ByteReader& in, WindFieldDef& def) {
     def_record(in, def);
+    in(def.tunnel);
 }
 
 void load_state(ByteReader& in, WindField& f) {
@@ -131,6 +133,9 @@ Invalid validate(const WindFieldDef& d) {
 void hash_state(StateHasher& h, const WindField& f) {
     ByteWriter out(h);
     def_record(out, f.def);
+    if (f.def.tunnel) { // a field with open sides hashes as before tunnels
+        out(f.def.tunnel);
+    }
     out(f.origin);
     out(f.inv_cell);
     for (const auto& v : f.velocity) {

@@ -250,6 +250,7 @@ inline constexpr FieldRule<WindFieldDef> wind_field_fields[] = {
     {"pressure_iterations", &WindFieldDef::pressure_iterations,
      between(1, max_pressure_iterations)},
     {"eddy_viscosity", &WindFieldDef::eddy_viscosity, between(0, max_eddy_viscosity)},
+    {"tunnel", &WindFieldDef::tunnel},
 };
 
 [[nodiscard]] Invalid validate(const WindFieldDef& d);

@@ -214,7 +214,7 @@ void fill_ground(const World& w, const WindField& f, WindFieldSolver& s) {
     }
 }
 
-/// Turns air that no open side (x, z or the top) reaches through air into
+/// Turns air that no open side (x, z unless walls, or the top) reaches through air into
 /// solid: inside a closed mesh building, or walls standing on the ground all
 /// round. There the projection could never clear the gust shift it is given
 /// (docs/wind_field.md "The solver"), and no wind belongs.
@@ -234,8 +234,8 @@ void fill_enclosed(const WindField& f, WindFieldSolver& s) {
                 if (is_ghost(i, j, k)) {
                     m[static_cast<std::size_t>(q)] = reached; // never entered, air again below
                 } else if (m[static_cast<std::size_t>(q)] == air &&
-                           (i == 1 || k == 1 || i == c.dim[0] - 2 || k == c.dim[2] - 2 ||
-                            j == c.dim[1] - 2)) {
+                           (i == 1 || i == c.dim[0] - 2 || j == c.dim[1] - 2 ||
+                            (!f.def.tunnel && (k == 1 || k == c.dim[2] - 2)))) {
                     m[static_cast<std::size_t>(q)] = reached;
                     s.reach.push_back(q);
                 }

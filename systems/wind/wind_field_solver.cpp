@@ -7,8 +7,9 @@
 //
 // Boundaries: the floor is a wall (no flow through it, air slides along it);
 // sides the global wind blows in through hold the wind on their faces and in
-// their ghosts (pressure: no flux through them); all other sides and the top
-// are open (pressure 0, velocity extrapolated). Faces touching a solid cell
+// their ghosts (pressure: no flux through them); a tunnel's z sides are walls
+// as the floor is; all other sides and the top are open (pressure 0,
+// velocity extrapolated). Faces touching a solid cell
 // hold zero velocity, so air inside and along obstacles is still: the
 // semi-Lagrangian trace reads that stillness into the cells behind them.
 #include "systems/wind/wind_field_solver.hpp"
@@ -54,6 +55,13 @@ bool inflow_low(std::uint8_t sides, int axis) {
 }
 bool inflow_high(std::uint8_t sides, int axis) {
     return axis == 0 ? (sides & inflow_x_max) != 0 : axis == 2 && (sides & inflow_z_max) != 0;
+}
+/// Walls the air slides along: the floor, a tunnel's z sides.
+bool wall_low(std::uint8_t sides, int axis) {
+    return axis == 1 || (axis == 2 && (sides & walls_z) != 0);
+}
+bool wall_high(std::uint8_t sides, int axis) {
+    return axis == 2 && (sides & walls_z) != 0;
 }
 
 /// Calls fn(index) for every sample of `l` whose index along `axis` is `at`.
@@ -114,14 +122,17 @@ void slide_over_ground(const WindField& f, const WindFieldSolver& s, int a, Vect
     }
 }
 
-/// Inflow faces hold the wind, floor faces zero, faces at obstacles zero.
+/// Inflow faces hold the wind, wall faces zero, faces at obstacles zero.
 void enforce(WindField& f, const WindFieldSolver& s, const glm::vec3& inflow, std::uint8_t sides) {
     for (int a = 0; a < 3; ++a) {
         Vector<float>& v = f.velocity[a];
         const Lattice& l = f.face[a];
         const std::int32_t top = l.dim[a] - 1;
-        if (a == 1) {
+        if (wall_low(sides, a)) {
             each_in_plane(l, a, 0, [&](std::int32_t i) { v[i] = 0.0f; });
+        }
+        if (wall_high(sides, a)) {
+            each_in_plane(l, a, top, [&](std::int32_t i) { v[i] = 0.0f; });
         }
         if (inflow_low(sides, a)) {
             each_in_plane(l, a, 0, [&](std::int32_t i) { v[i] = inflow[a]; });
@@ -542,10 +553,11 @@ void build_inv_diag(const WindField& f, WindFieldSolver& s, std::uint8_t sides) 
             for (int a = 0; a < 3; ++a) {
                 const std::int32_t pos = a == 0 ? i : at[a];
                 const float coefficient = f.inv_cell[a] * f.inv_cell[a];
-                // Below the first cell is the floor (a wall); past the others
-                // an inflow side (no flux) or open air (φ = 0, counted).
-                const bool lo_wall = pos == 1 && (a == 1 || inflow_low(sides, a));
-                const bool hi_wall = pos == c.dim[a] - 2 && inflow_high(sides, a);
+                // Past the last cells: a wall or an inflow side (no flux) or
+                // open air (φ = 0, counted).
+                const bool lo_wall = pos == 1 && (wall_low(sides, a) || inflow_low(sides, a));
+                const bool hi_wall =
+                    pos == c.dim[a] - 2 && (wall_high(sides, a) || inflow_high(sides, a));
                 if (!lo_wall && s.solid[q - c.stride(a)] == 0) {
                     sum += coefficient;
                 }
@@ -611,10 +623,13 @@ void resist(WindField& f, const WindFieldSolver& s, float dt) {
 
 } // namespace
 
-std::uint8_t inflow_sides(const glm::vec3& wind) {
+std::uint8_t field_sides(const glm::vec3& wind, bool tunnel) {
     std::uint8_t s = 0;
     s |= wind.x > 0.0f ? inflow_x_min : 0;
     s |= wind.x < 0.0f ? inflow_x_max : 0;
+    if (tunnel) {
+        return s | walls_z;
+    }
     s |= wind.z > 0.0f ? inflow_z_min : 0;
     s |= wind.z < 0.0f ? inflow_z_max : 0;
     return s;
@@ -678,8 +693,10 @@ void apply_obstacles(WindField& f, WindFieldSolver& s) {
     s.diag_sides = 0xff; // rebuilt at the next step
 }
 
-void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, float dt) {
-    const std::uint8_t sides = inflow_sides(inflow);
+void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& wind, float dt) {
+    // A tunnel's walls let no wind in across them.
+    const glm::vec3 inflow = f.def.tunnel ? glm::vec3(wind.x, wind.y, 0.0f) : wind;
+    const std::uint8_t sides = field_sides(inflow, f.def.tunnel);
     if (s.diag_sides != sides) {
         build_inv_diag(f, s, sides);
     }

@@ -11,17 +11,20 @@
 
 namespace snow {
 
-/// Which sides of the box take the global wind in (bit set: inflow). The
-/// floor is a wall and the top is always open; the rest are open outflow.
-enum InflowSide : std::uint8_t {
+/// Which sides of the box take the global wind in (bit set: inflow), and
+/// whether the z sides are walls (WindFieldDef::tunnel). The floor is a wall
+/// and the top is always open; the rest are open outflow.
+enum FieldSide : std::uint8_t {
     inflow_x_min = 1,
     inflow_x_max = 2,
     inflow_z_min = 4,
     inflow_z_max = 8,
+    walls_z = 16,
 };
 
-/// The sides a wind blows in through: those it points away from.
-[[nodiscard]] std::uint8_t inflow_sides(const glm::vec3& wind);
+/// The sides a wind blows in through (those it points away from), or for a
+/// tunnel the x sides it blows in through and the z walls.
+[[nodiscard]] std::uint8_t field_sides(const glm::vec3& wind, bool tunnel);
 
 /// The pressure sweeps' arrays with each colour (i + j + k) & 1 of the
 /// centre lattice dense (layout in wind_field.cpp, odd_up): the pressure
@@ -54,7 +57,7 @@ struct WindFieldSolver {
     Vector<std::int32_t> reach;     ///< the enclosed-air search's stack
     Vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
     Vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
-    std::uint8_t diag_sides = 0xff; ///< inflow sides inv_diag was built for
+    std::uint8_t diag_sides = 0xff; ///< field_sides inv_diag was built for
     ColourSplit split;              ///< the sweeps' arrays, by colour
     Vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
     Vector<float> divergence;
@@ -74,9 +77,10 @@ void reserve_solver(const WindField& f, WindFieldSolver& s);
 /// newly solid faces (the field's state changes, deterministically).
 void apply_obstacles(WindField& f, WindFieldSolver& s);
 
-/// One solver step of dt seconds with `inflow` (m/s) on the upwind sides; the
-/// first step fills the field with the inflow and projects it [STAM §3].
-void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& inflow, float dt);
+/// One solver step of dt seconds with `wind` (m/s) on the upwind sides (a
+/// tunnel takes its x and y parts); the first step fills the field with the
+/// inflow and projects it [STAM §3].
+void step_wind_field(WindField& f, WindFieldSolver& s, const glm::vec3& wind, float dt);
 
 /// Mean |∇·u| over the open cells (1/s): how far the last projection is
 /// from incompressible (for tests).

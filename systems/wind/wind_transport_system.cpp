@@ -176,39 +176,51 @@ constexpr std::uint8_t blows(bool along_x, int dir) {
     return static_cast<std::uint8_t>(1u << ((along_x ? 0u : 2u) + (dir > 0 ? 0u : 1u)));
 }
 
-/// Units the flux carries this step across the face of cell (ix, iz) that
-/// lies `dir` (±1) along x (`along_x`) or z: 0 unless the wind blows that way
-/// fast enough to move the cell's snow.
-std::uint32_t face_units(const SnowSurface& s, const Step& st, const TransportScratch& scratch,
-                         std::uint32_t ix, std::uint32_t iz, bool along_x, int dir) {
+/// What the flux can move this step across one face of a cell, in units.
+struct FaceUnits {
+    /// Of the grains that arrive from upwind: these bounce on over any bed,
+    /// so the fresh snow's threshold holds for them [PG90].
+    std::uint32_t carry = 0;
+    /// In all, taking up the cell's own snow: its threshold, by its density.
+    std::uint32_t take = 0;
+};
+
+/// What the flux moves this step across the face of cell (ix, iz) that lies
+/// `dir` (±1) along x (`along_x`) or z: nothing unless the wind blows that
+/// way fast enough to move fresh snow.
+FaceUnits face_units(const SnowSurface& s, const Step& st, const TransportScratch& scratch,
+                     std::uint32_t ix, std::uint32_t iz, bool along_x, int dir) {
     // A tile none of whose corners blows this way has no cell that does.
     if ((scratch.tile_windy[s.tile_of(ix, iz)] & blows(along_x, dir)) == 0) {
-        return 0;
+        return {};
     }
     const glm::vec2 wind = wind_over(s, scratch, ix, iz);
     const float u = wind.x, w = wind.y;
     const float along = along_x ? u : w;
     if (!(along * static_cast<float>(dir) > 0.0f)) {
-        return 0;
+        return {};
     }
     const double speed = std::sqrt(static_cast<double>(u) * u + static_cast<double>(w) * w);
     const double u_star = st.per_wind * speed;
     if (!(u_star > st.fresh_threshold)) {
-        return 0;
+        return {};
     }
+    const double per_flux = st.units_per_flux * std::abs(static_cast<double>(along)) / speed;
+    const float draw = draw_for(st, ix, iz, along_x, dir, 0);
+    const auto units = [&](double threshold) {
+        const double share = saltation_flux(u_star, threshold, st.air_kg_m3, st.g) * per_flux;
+        return share < max_face_units ? whole_units(share, draw) : max_face_units;
+    };
+    const std::uint32_t fresh = units(st.fresh_threshold);
     const std::size_t i = s.index(ix, iz);
     // Snow nothing packed is fresh: its threshold is known without an exp.
     const std::uint32_t packed = s.compacted.empty() ? 0 : s.compacted[i];
-    const double threshold =
-        packed == 0 ? st.fresh_threshold
-                    : threshold_friction_velocity(st.fresh * static_cast<double>(s.snow[i]) /
-                                                  static_cast<double>(s.snow[i] - packed));
-    const double flux = saltation_flux(u_star, threshold, st.air_kg_m3, st.g);
-    const double share = flux * st.units_per_flux * std::abs(static_cast<double>(along)) / speed;
-    if (!(share < max_face_units)) {
-        return max_face_units;
+    if (packed == 0) {
+        return {fresh, fresh};
     }
-    return whole_units(share, draw_for(st, ix, iz, along_x, dir, 0));
+    const double density =
+        st.fresh * static_cast<double>(s.snow[i]) / static_cast<double>(s.snow[i] - packed);
+    return {fresh, units(threshold_friction_velocity(density))};
 }
 
 /// Lays `units` the flux along (dx, dz) drops into cell (ix, iz), up to the cell's
@@ -248,15 +260,15 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
     const std::size_t next = downwind(s, ix, iz, dx, dz);
     std::uint32_t out = 0;
     if (next < wall || (next == off_surface && s.spills)) {
-        const std::uint32_t capacity = face_units(s, st, scratch, ix, iz, dx != 0, dx + dz);
-        const std::uint32_t taken = std::min(capacity - std::min(capacity, carry), s.snow[i]);
+        const FaceUnits can = face_units(s, st, scratch, ix, iz, dx != 0, dx + dz);
+        const std::uint32_t taken = std::min(can.take - std::min(can.take, carry), s.snow[i]);
         if (taken != 0) {
             s.snow[i] -= taken;
             s.fit_compaction(i);
             s.mark_dirty(i);
         }
         // What the wind cannot carry on is laid here; what does not fit goes on.
-        const std::uint32_t through = std::min(carry, capacity);
+        const std::uint32_t through = std::min(carry, can.carry);
         out = through + taken + lay(s, st, ix, iz, dx, dz, carry - through);
     } else {
         // Against a wall or a closed end: only a full cell lets units on.

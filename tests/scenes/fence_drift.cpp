@@ -27,7 +27,8 @@ FenceDriftResult fence_drift(const FenceDrift& run) {
         return static_cast<std::uint32_t>(std::lround(extent / field_cell));
     };
     test::blow_steadily_through_field(
-        sim, run.wind, {across(size.x), across(size.y), across(size.z), field_every});
+        sim, run.wind,
+        {across(size.x), across(size.y), across(size.z), field_every, /*tunnel=*/true});
     sim.set_wind_transport(WindTransportDef{});
     SurfaceDef ground;
     ground.x0 = cfg.bounds.min.x;

@@ -1,10 +1,11 @@
 /// @file fence_drift.hpp
 /// @brief Snow blowing at a fence: a fetch of fresh snow upwind, bare ground
 /// round a fence of height H across the wind, a steady wind through a field
-/// that lets air through the fence by its porosity [Wil85]. What the tests
-/// hold to: a porous fence slows the air in its lee and the snow the wind
-/// carries stops round it; with no fence it passes (docs/wind_field.md
-/// "Porous fences": where it stops, and why not yet in the lee).
+/// that lets air through the fence by its porosity [Wil85], in a 1 m slice
+/// of a long fence (the field is a tunnel: its sides are walls the air slides
+/// along). What the tests hold to: a porous fence slows the air in its lee,
+/// and the snow the wind carries drops on both sides of it; with no fence it
+/// passes (docs/wind_field.md "Porous fences").
 #pragma once
 
 namespace snow {

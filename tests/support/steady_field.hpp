@@ -14,6 +14,7 @@ namespace snow::test {
 struct FieldGrid {
     std::uint32_t x = 64, y = 16, z = 64;
     std::uint32_t update_every = 4;
+    bool tunnel = false; ///< WindFieldDef::tunnel
 };
 
 /// Sets the global wind to `speed` m/s along +x, steady, and declares a field
@@ -29,6 +30,7 @@ inline void blow_steadily_through_field(Simulation& sim, float speed, const Fiel
     def.cells_y = grid.y;
     def.cells_z = grid.z;
     def.update_every = grid.update_every;
+    def.tunnel = grid.tunnel;
     sim.set_wind_field(def);
 }
 

@@ -38,7 +38,7 @@ SceneLoadResult load(const std::string& text) {
 TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
     const SceneLoadResult r =
         load(village_with_field("\"cells\": [40, 12, 40], \"update_every\": 2, "
-                                "\"sample_every\": 8"));
+                                "\"sample_every\": 8, \"tunnel\": true"));
     ASSERT_TRUE(r.sim) << r.error;
     const auto* f = world_of(*r.sim).try_resource<WindField>();
     ASSERT_NE(f, nullptr);
@@ -47,6 +47,7 @@ TEST(WindFieldScene, DeclaredFieldIsBuiltWithTheScenesGrid) {
     EXPECT_EQ(f->n[2], 40u);
     EXPECT_EQ(f->def.update_every, 2u);
     EXPECT_EQ(f->def.sample_every, 8u);
+    EXPECT_TRUE(f->def.tunnel);
     const SceneLoadResult plain = load(village_text());
     ASSERT_TRUE(plain.sim) << plain.error;
     EXPECT_FALSE(world_of(*plain.sim).has_resource<WindField>());
@@ -68,6 +69,7 @@ TEST(WindFieldScene, BadFieldsGiveOneErrorNamingTheField) {
     rejects("\"sample_every\": 2.5", {"wind.field.sample_every"});
     rejects("\"eddy_viscosity\": -1", {"wind.field.eddy_viscosity"});
     rejects("\"eddy_viscosity\": \"fast\"", {"wind.field.eddy_viscosity"});
+    rejects("\"tunnel\": 1", {"wind.field.tunnel"});
     rejects("\"speed\": 3", {"wind.field", "unknown field 'speed'"});
 }
 
