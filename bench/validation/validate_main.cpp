@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
         {"roof load by pitch", roof_load_by_pitch},
         {"wind over the ground", ground_wind},
         {"saltation flux", saltation_flux},
+        {"drifts at a porous fence", fence_drift_shape},
     };
     try {
         if (!out.empty()) {

@@ -55,4 +55,8 @@ struct Probe {
 /// cell, twice the depth, half the tick and half the field's cells.
 [[nodiscard]] std::vector<Row> saltation_flux(const Plan& plan);
 
+/// The lee and windward drifts of a 50% porous fence against Tabler's
+/// equilibrium drifts [Tab80].
+[[nodiscard]] std::vector<Row> fence_drift_shape(const Plan& plan);
+
 } // namespace snow::validation

@@ -129,6 +129,11 @@ struct WindTransportDef {
     /// Height z (m) above the snow top at which the field's wind U(z) is
     /// read; above `roughness`.
     float height = 0.25f;
+    /// Seconds of drifting per second of air: the flux moves this many times
+    /// the snow each step, as morphological models speed a bed's evolution
+    /// while its flow stays the same (MORFAC, docs/references.md [Roe06]). 1:
+    /// real time; a fast-forward to a drift's equilibrium takes more.
+    float fast_forward = 1.0f;
 };
 
 /// Settings to create a surface; see make_surface().

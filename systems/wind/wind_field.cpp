@@ -97,6 +97,7 @@ void save_state(ByteWriter& out, const WindField& f) {
     field_state_record(out, f, transport);
     if (transport) {
         transport_record(out, *f.transport);
+        out(f.transport->fast_forward);
     }
 }
 
@@ -118,6 +119,7 @@ void load_state(ByteReader& in, WindField& f) {
     f.transport.reset();
     if (transport) {
         transport_record(in, f.transport.emplace());
+        in(f.transport->fast_forward);
     }
     pack_centre(f);
 }
@@ -147,6 +149,9 @@ void hash_state(StateHasher& h, const WindField& f) {
     out(f.steps);
     if (f.transport) {
         transport_record(out, *f.transport);
+        if (f.transport->fast_forward != 1.0f) { // real time hashes as before fast-forwards
+            out(f.transport->fast_forward);
+        }
     }
 }
 

@@ -174,36 +174,10 @@ struct Marker {
     }
 };
 
-/// Fills each column under a ground surface (one lying on no solid) up to
-/// the last cell whose centre is at or below its bare top: the top rounded
-/// to the nearest cell face, as a box's faces are. The air then flows over
-/// the terrain, not over the bounds floor under it, and never under a
-/// building standing on it. Bare tops only: snow changes every tick, the
-/// mask only with the geometry.
-void fill_ground(const World& w, const WindField& f, WindFieldSolver& s) {
-    const auto nx = static_cast<std::int32_t>(f.n[0]), ny = static_cast<std::int32_t>(f.n[1]),
-               nz = static_cast<std::int32_t>(f.n[2]);
-    s.ground_cells.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz), 0);
-    w.each<SnowSurface, SurfaceOf>([&](Entity, const SnowSurface& g, const SurfaceOf& of) {
-        if (!of.owner.is_null()) {
-            return;
-        }
-        for (std::int32_t k = 0; k < nz; ++k) {
-            for (std::int32_t i = 0; i < nx; ++i) {
-                const float x = f.origin.x + (static_cast<float>(i) + 0.5f) / f.inv_cell.x;
-                const float z = f.origin.z + (static_cast<float>(k) + 0.5f) / f.inv_cell.z;
-                std::uint32_t ix = 0, iz = 0;
-                if (!g.cell_at(x, z, ix, iz) || g.is_void(g.index(ix, iz))) {
-                    continue;
-                }
-                const double top = g.height(g.base_level[g.index(ix, iz)]);
-                const double cells = std::floor((top - f.origin.y) * f.inv_cell.y + 0.5);
-                auto& filled = s.ground_cells[static_cast<std::size_t>(k * nx + i)];
-                filled =
-                    std::max(filled, static_cast<std::int32_t>(std::clamp(cells, 0.0, 1.0 * ny)));
-            }
-        }
-    });
+/// Fills each column under a ground surface with the ground_columns() the
+/// solver holds.
+void fill_ground(const WindField& f, WindFieldSolver& s) {
+    const auto nx = static_cast<std::int32_t>(f.n[0]), nz = static_cast<std::int32_t>(f.n[2]);
     for (std::int32_t k = 0; k < nz; ++k) {
         for (std::int32_t i = 0; i < nx; ++i) {
             for (std::int32_t j = 0; j < s.ground_cells[static_cast<std::size_t>(k * nx + i)];
@@ -261,6 +235,37 @@ void fill_enclosed(const WindField& f, WindFieldSolver& s) {
 
 } // namespace
 
+void ground_columns(const World& w, const WindField& f, Vector<std::int32_t>& filled) {
+    const auto nx = static_cast<std::int32_t>(f.n[0]), ny = static_cast<std::int32_t>(f.n[1]),
+               nz = static_cast<std::int32_t>(f.n[2]);
+    filled.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(nz), 0);
+    w.each<SnowSurface, SurfaceOf>([&](Entity, const SnowSurface& g, const SurfaceOf& of) {
+        if (!of.owner.is_null()) {
+            return;
+        }
+        for (std::int32_t k = 0; k < nz; ++k) {
+            for (std::int32_t i = 0; i < nx; ++i) {
+                const float x = f.origin.x + (static_cast<float>(i) + 0.5f) / f.inv_cell.x;
+                const float z = f.origin.z + (static_cast<float>(k) + 0.5f) / f.inv_cell.z;
+                std::uint32_t ix = 0, iz = 0;
+                if (!g.cell_at(x, z, ix, iz) || g.is_void(g.index(ix, iz))) {
+                    continue;
+                }
+                const double top = g.top_y(g.index(ix, iz));
+                const double cells = std::floor((top - f.origin.y) * f.inv_cell.y + 0.5);
+                auto& column = filled[static_cast<std::size_t>(k * nx + i)];
+                column =
+                    std::max(column, static_cast<std::int32_t>(std::clamp(cells, 0.0, 1.0 * ny)));
+            }
+        }
+    });
+}
+
+bool ground_moved(const World& w, const WindField& f, WindFieldSolver& s) {
+    ground_columns(w, f, s.ground_now);
+    return s.ground_now != s.ground_cells;
+}
+
 void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s) {
     s.solid.assign(f.centre.size(), 0);
     s.resistance.assign(f.centre.size(), 0.0f);
@@ -272,7 +277,8 @@ void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s) {
             m.triangle(mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]);
         }
     });
-    fill_ground(w, f, s);
+    ground_columns(w, f, s.ground_cells);
+    fill_ground(f, s);
     fill_enclosed(f, s);
 }
 

@@ -641,6 +641,7 @@ void reserve_solver(const WindField& f, WindFieldSolver& s) {
     s.resistance.reserve(cells);
     s.reach.reserve(cells); // a cell is pushed at most once
     s.ground_cells.reserve(std::size_t{f.n[0]} * f.n[2]);
+    s.ground_now.reserve(std::size_t{f.n[0]} * f.n[2]);
     s.inv_diag.reserve(cells);
     s.divergence.reserve(cells);
     for (int a = 0; a < 3; ++a) {

@@ -54,12 +54,13 @@ struct WindFieldSolver {
     /// Per column (x fastest): how many cells from the bottom the ground
     /// fills (0: none); the top one reads as the air above it.
     Vector<std::int32_t> ground_cells;
-    Vector<std::int32_t> reach;     ///< the enclosed-air search's stack
-    Vector<std::int32_t> closed[3]; ///< per component: faces touching a solid cell
-    Vector<float> inv_diag;         ///< per cell: 1 / Σ coefficients of its open neighbours
-    std::uint8_t diag_sides = 0xff; ///< field_sides inv_diag was built for
-    ColourSplit split;              ///< the sweeps' arrays, by colour
-    Vector<float> advected[3];      ///< semi-Lagrangian output, swapped with the velocity
+    Vector<std::int32_t> ground_now; ///< ground_moved()'s columns, as the snow stands now
+    Vector<std::int32_t> reach;      ///< the enclosed-air search's stack
+    Vector<std::int32_t> closed[3];  ///< per component: faces touching a solid cell
+    Vector<float> inv_diag;          ///< per cell: 1 / Σ coefficients of its open neighbours
+    std::uint8_t diag_sides = 0xff;  ///< field_sides inv_diag was built for
+    ColourSplit split;               ///< the sweeps' arrays, by colour
+    Vector<float> advected[3];       ///< semi-Lagrangian output, swapped with the velocity
     Vector<float> divergence;
 };
 
@@ -68,6 +69,18 @@ struct WindFieldSolver {
 /// spheres, triangle meshes), the cells at or below the ground surfaces and
 /// air no open side reaches (inside a closed building).
 void mark_obstacles(const World& w, const WindField& f, WindFieldSolver& s);
+
+/// Per column of the field (x fastest), into `filled`: how many cells from
+/// the bottom the ground fills, up to the last cell whose centre is at or
+/// below the snow top of a ground surface (one lying on no solid) there: the
+/// top rounded to the nearest cell face, as a box's faces are. The air then
+/// flows over the terrain and its drifts, not over the bounds floor under
+/// them, and never under a building standing on the ground.
+void ground_columns(const World& w, const WindField& f, Vector<std::int32_t>& filled);
+
+/// Whether the snow has moved the ground's columns since the obstacles were
+/// marked (then they are marked again).
+[[nodiscard]] bool ground_moved(const World& w, const WindField& f, WindFieldSolver& s);
 
 /// Gives `s` room for everything the field's obstacle rebuilds and steps
 /// write (prepare_wind_field): then neither allocates.

@@ -1,7 +1,7 @@
 // wind_field: steps the declared field every update_every ticks, after the
 // global wind moved (its walk and gusts are the inflow) and before flakes
 // integrate in it. Obstacles are re-marked when the solids or the surfaces
-// (the ground) changed.
+// changed, or the snow moved the ground.
 #include "systems/api/systems.hpp"
 #include "systems/core/sim_config.hpp"
 #include "systems/core/source_versions.hpp"
@@ -27,7 +27,10 @@ void wind_field_system(World& w) {
     WindField& f = w.resource<WindField>();
     auto* s = &w.resource<WindFieldSolver>();
     const SourceVersions v = source_versions(w);
-    if (!s->built || s->built_from_solids != v.solids || s->built_from_surfaces != v.surfaces) {
+    // The ground follows the snow (its drifts shape the air): looked at only
+    // before a step.
+    if (!s->built || s->built_from_solids != v.solids || s->built_from_surfaces != v.surfaces ||
+        (f.wait == 0 && ground_moved(w, f, *s))) {
         mark_obstacles(w, f, *s);
         apply_obstacles(f, *s);
         s->built = true;

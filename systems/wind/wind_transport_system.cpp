@@ -463,7 +463,7 @@ void wind_transport_system(World& w) {
     st.wind_packing = 1.0 - st.fresh / wind_packed_snow_density;
     st.key = {config.seed, f.steps, 0, random_stream::transport};
     st.k_over_m = clump_drag(w);
-    const float seconds = config.dt * static_cast<float>(f.def.update_every);
+    const float seconds = config.dt * static_cast<float>(f.def.update_every) * st.def->fast_forward;
     // The wind (m/s at the read height) that moves fresh snow.
     const auto calm = static_cast<float>(st.fresh_threshold / st.per_wind);
     prepare_wind_transport(w);

@@ -8,14 +8,34 @@
 /// passes (docs/wind_field.md "Porous fences").
 #pragma once
 
+#include <vector>
+
 namespace snow {
 
 /// One run. The fence stands at x = 0 across the whole width; the fetch lies
-/// 6 H to 15 H upwind; the ground reaches 24 H downwind.
+/// from `upwind` − 1 H to `upwind` − 10 H upwind; the ground reaches from
+/// `upwind` H upwind to `downwind` H downwind.
 struct FenceDrift {
-    float porosity = 0.5f; ///< the fence's open share; 1 = no fence
-    float wind = 8.0f;     ///< the free wind along +x (m/s)
-    float seconds = 60.0f; ///< how long the snow blows, after the air settles
+    float porosity = 0.5f;     ///< the fence's open share; 1 = no fence
+    float wind = 8.0f;         ///< the free wind along +x (m/s)
+    float seconds = 60.0f;     ///< how long the snow blows, after the air settles
+    float upwind = 16.0f;      ///< H
+    float downwind = 24.0f;    ///< H
+    float fast_forward = 1.0f; ///< WindTransportDef::fast_forward
+    /// The fetch is topped up to its depth before every field step, as a
+    /// long snow field upwind would feed the wind: the run can reach an
+    /// equilibrium.
+    bool endless_fetch = false;
+    /// Seconds (after the air settled) at which the drifts' shape is taken.
+    std::vector<float> shape_at;
+};
+
+/// Drifts' shape at one time, in fence heights: where the snow stands at
+/// least 2 cm (H/50) above where it stood, from the fence out.
+struct DriftShape {
+    float seconds = 0.0f;
+    double lee_length = 0.0, lee_depth = 0.0;           ///< behind the fence
+    double windward_length = 0.0, windward_depth = 0.0; ///< before it, to the fetch
 };
 
 /// What a run gives; distances in fence heights H (1 m), masses per metre
@@ -28,9 +48,10 @@ struct FenceDriftResult {
     /// upwind of it to the fence.
     double lee_gain = 0.0;
     double windward_gain = 0.0;
-    /// Snow the fetch lost (kg/m): what the wind carried in all.
+    /// Snow the fetch lost (kg/m), top-ups included: what the wind carried in all.
     double fetch_loss = 0.0;
-    bool balanced = true; ///< the ledger held every tick
+    bool balanced = true;           ///< the ledger held every tick
+    std::vector<DriftShape> shapes; ///< one per FenceDrift::shape_at
 };
 
 [[nodiscard]] FenceDriftResult fence_drift(const FenceDrift& run);

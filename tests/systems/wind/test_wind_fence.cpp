@@ -51,6 +51,27 @@ TEST(WindFence, AirBleedsThroughAPorousFenceAndSlowsBehindIt) {
     EXPECT_LT(solid.lee_gain, 0.1 * solid.fetch_loss);
 }
 
+TEST(WindFence, ALeeDriftGrowsBehindAPorousFenceInAFastForward) {
+    // 10 m/s over an endless fetch, the drifting run 1000 times as fast as
+    // the air: 17 and 50 hours of drifting.
+    FenceDrift run;
+    run.wind = 10.0f;
+    run.upwind = 30.0f;
+    run.downwind = 45.0f;
+    run.fast_forward = 1000.0f;
+    run.endless_fetch = true;
+    run.seconds = 180.0f;
+    run.shape_at = {60.0f, 180.0f};
+    const FenceDriftResult r = fence_drift(run);
+    ASSERT_EQ(r.shapes.size(), 2u);
+    const DriftShape &early = r.shapes[0], &late = r.shapes[1];
+    EXPECT_TRUE(r.balanced);
+    EXPECT_GT(late.lee_length, early.lee_length) << "the lee drift grows downwind";
+    EXPECT_GT(late.lee_depth, early.lee_depth) << "and deeper";
+    EXPECT_GT(late.lee_depth, 0.2) << "H";
+    EXPECT_GT(r.lee_gain, 5.0 * r.windward_gain) << "a 50% fence stores its snow in its lee";
+}
+
 TEST(WindFence, BadPorosityIsNamedAndNothingIsAdded) {
     Simulation sim{SimConfig{}};
     const std::uint64_t before = sim.state_hash();

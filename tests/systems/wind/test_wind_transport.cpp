@@ -188,6 +188,11 @@ TEST(WindTransport, BadSettingsNameTheFieldAndChangeNothing) {
     t = {};
     t.height = 0.5f * t.roughness; // the log law needs z > z0
     rejects(t, "wind.field.transport.height");
+    for (const float bad : {0.5f, 2.0e5f, std::numeric_limits<float>::quiet_NaN()}) {
+        t = {};
+        t.fast_forward = bad;
+        rejects(t, "wind.field.transport.fast_forward");
+    }
     Simulation no_field;
     EXPECT_THROW(no_field.set_wind_transport(drifting()), SimulationError);
 }
