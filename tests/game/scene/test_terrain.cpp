@@ -9,8 +9,11 @@
 #include "systems/api/simulation_internals.hpp"
 #include "systems/geometry/colliders.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace snow::test {
@@ -147,6 +150,50 @@ TEST(Terrain, CountsInTheWorkBudget) {
     o.budget.collider_triangles = 10;
     expect_error(s.load(good_world, height_png(5, 4, samples), o),
                  {heightmap_field, "24 mesh collider triangles", "collider_triangles"});
+}
+
+TEST(TerrainValley, LoadsItsKilometresOfTerrainUnderTheVillage) {
+    const SceneLoadResult r = load_scene_file(asset_path("valley.gltf"));
+    ASSERT_NE(r.sim, nullptr) << r.error;
+    const auto terrain =
+        std::ranges::find(r.visuals.meshes, std::string("terrain"), &MeshRenderable::name);
+    ASSERT_NE(terrain, r.visuals.meshes.end());
+    EXPECT_EQ(terrain->positions.size(), 257u * 257u);
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-lo);
+    for (const glm::vec3& p : terrain->positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    EXPECT_EQ(lo.x, -2000.0f);
+    EXPECT_EQ(hi.z, 2000.0f);
+    EXPECT_GT(lo.y, 0.0f); // inside the declared [0, 400] m, hills well above the floor
+    EXPECT_LT(hi.y, 400.0f);
+    EXPECT_GT(hi.y - lo.y, 200.0f);
+    // The houses stand on the terrace: their walls' bottoms at the terrain there.
+    const auto walls =
+        std::ranges::find(r.visuals.meshes, std::string("house 0 walls"), &MeshRenderable::name);
+    ASSERT_NE(walls, r.visuals.meshes.end());
+    float wall_bottom = std::numeric_limits<float>::infinity();
+    for (const glm::vec3& p : walls->positions) {
+        wall_bottom = std::min(wall_bottom, p.y);
+    }
+    const glm::vec3 at = walls->positions.front();
+    float nearest = std::numeric_limits<float>::infinity(), ground = 0.0f;
+    for (const glm::vec3& p : terrain->positions) {
+        const float d = glm::length(glm::vec2(p.x - at.x, p.z - at.z));
+        if (d < nearest) {
+            nearest = d;
+            ground = p.y;
+        }
+    }
+    EXPECT_NEAR(wall_bottom, ground, 1e-3f);
+}
+
+TEST(TerrainValley, AssetsAreUpToDate) {
+    const int status = std::system(
+        ("python3 " + std::string(SNOW_SOURCE_DIR) + "/scripts/make_assets.py --check 2>&1")
+            .c_str());
+    EXPECT_EQ(status, 0) << "assets/scenes is stale: run python3 scripts/make_assets.py";
 }
 
 // --- bad input: one error naming the field, no simulation ---------------------
