@@ -30,7 +30,7 @@ the same bytes (--check exits 1 if a file would change). Scenes:
                         valley with a road along its floor, a village of the
                         village's houses and garages on a levelled terrace by
                         the road, a forest of cone trees on the slopes; snow
-                        falls on a 160 x 160 m region round the village.
+                        falls on a 120 x 120 m region round the village.
 """
 
 import base64
@@ -457,6 +457,7 @@ VALLEY_HEIGHT = (0.0, 400.0)     # grey 0 and 65535 (m)
 ROAD_FLAT, ROAD_BLEND = 20.0, 40.0      # half-width of the levelled band, its blend (m)
 VILLAGE_AT = (0.0, 60.0)                # the terrace's centre (x, z)
 VILLAGE_FLAT, VILLAGE_BLEND = 60.0, 90.0
+SNOW_HALF = 60.0                        # snow falls on 120 x 120 m round the village
 
 
 def smoothstep(e0, e1, x):
@@ -616,24 +617,25 @@ def valley():
         if math.hypot(x - vx, z - vz) < VILLAGE_FLAT + 5.0:
             continue
         y = round(sample_height(samples, x, z) - 0.5, 4)  # rooted below the slope
-        snow = {"collider": "mesh"} if max(abs(x - vx), abs(z - vz)) < 80.0 else None
+        snow = {"collider": "mesh"} if max(abs(x - vx), abs(z - vz)) < SNOW_HALF + 20.0 else None
         roots.append(g.node("tree %d" % trees, tree_mesh, translation=[round(x, 3), y, round(z, 3)],
                             scale=[round(0.3 * h, 4), round(h, 4), round(0.3 * h, 4)], snow=snow))
         trees += 1
 
     top = base + 25.0
     snow = {
-        "simulation": {"dt": DT, "seed": 7, "max_flakes": 150000, "integrator": "euler",
+        "simulation": {"dt": DT, "seed": 7, "max_flakes": 100000, "integrator": "euler",
                        "threads": 1,
-                       "bounds": {"min": [vx - 80.0, base - 40.0, vz - 80.0],
-                                  "max": [vx + 80.0, top, vz + 80.0]}},
-        # Light snow (1 kg/m²/h) of flakes up to 1 cm: over 160 × 160 m that
-        # takes about 5000 parcels a second to keep each under 5 g.
-        "emitter": dict(EMITTER, rate=5000.0, snowfall_kg_m2_h=1.0, size_max=0.01),
+                       "bounds": {"min": [vx - SNOW_HALF, base - 40.0, vz - SNOW_HALF],
+                                  "max": [vx + SNOW_HALF, top, vz + SNOW_HALF]}},
+        # Light snow (1 kg/m²/h) of flakes up to 1 cm: over 120 × 120 m that
+        # takes about 3000 parcels a second to keep each under 5 g.
+        "emitter": dict(EMITTER, rate=3000.0, snowfall_kg_m2_h=1.0, size_max=0.01),
         "wind": {"base": [1.5, 0.0, 0.4], "walk": 0.2, "max_deviation": 0.6},
         "fog": {"mode": "exponential", "color": [0.75, 0.78, 0.82], "density": 0.0006},
         "occlusion": {"resolution": 512, "tilt": 0.0},
-        "cover": {"min": [vx - 80.0, vz - 80.0], "max": [vx + 80.0, vz + 80.0], "cell": 0.25},
+        "cover": {"min": [vx - SNOW_HALF, vz - SNOW_HALF], "max": [vx + SNOW_HALF, vz + SNOW_HALF],
+                  "cell": 0.25},
         "camera": {"position": [vx - 260.0, base + 110.0, vz + 330.0],
                    "target": [vx, base + 5.0, vz], "fov_y_deg": 50.0,
                    "near_plane": 0.5, "far_plane": 6000.0},
