@@ -25,6 +25,12 @@ the same bytes (--check exits 1 if a file would change). Scenes:
                         statue of spheres and boxes on a plinth, three benches,
                         five cone trees, a snow cover over everything, and
                         an afternoon sun (the trees' shadows on the snow).
+  valley.gltf           a 4 x 4 km terrain from the 16-bit height map
+  + valley_height.png   valley_height.png (docs/world.md): hills round a
+                        valley with a road along its floor, a village of the
+                        village's houses and garages on a levelled terrace by
+                        the road, a forest of cone trees on the slopes; snow
+                        falls on a 120 x 120 m region round the village.
 """
 
 import base64
@@ -32,6 +38,7 @@ import json
 import math
 import struct
 import sys
+import zlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -442,6 +449,203 @@ def minimal():
     return g.document("minimal", [ground], snow)
 
 
+# --- the valley: a terrain of kilometres (docs/world.md) ----------------------
+
+VALLEY_EXTENT = 4000.0           # m, each way, centred on the origin
+VALLEY_SAMPLES = 257             # per side: 15.625 m apart, 131 072 triangles
+VALLEY_HEIGHT = (0.0, 400.0)     # grey 0 and 65535 (m)
+ROAD_FLAT, ROAD_BLEND = 20.0, 40.0      # half-width of the levelled band, its blend (m)
+VILLAGE_AT = (0.0, 60.0)                # the terrace's centre (x, z)
+VILLAGE_FLAT, VILLAGE_BLEND = 60.0, 90.0
+SNOW_HALF = 60.0                        # snow falls on 120 x 120 m round the village
+
+
+def smoothstep(e0, e1, x):
+    t = min(max((x - e0) / (e1 - e0), 0.0), 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+def road_z(x):
+    """The valley floor's line, along x."""
+    return 160.0 * math.sin(x / 700.0) - 40.0 * math.sin(x / 260.0 + 0.5)
+
+
+def road_y(x):
+    """The road's height: a gentle climb along the valley."""
+    return 60.0 + 25.0 * math.sin(x / 900.0 + 0.4) + 0.004 * x
+
+
+def valley_y(x, z):
+    """Hills round a valley (sums of sines), the road's band and the village's
+    terrace levelled into them."""
+    d = z - road_z(x)
+    sides = 230.0 * (1.0 - math.exp(-d * d / (2.0 * 520.0 ** 2)))
+    hills = (38.0 * math.sin(x / 310.0 + 0.3) * math.cos(z / 270.0)
+             + 22.0 * math.sin((x + z) / 190.0)
+             + 9.0 * math.sin(x / 97.0) * math.sin(z / 83.0 + 1.0)
+             + 4.0 * math.sin(x / 41.0 + 2.0) * math.cos(z / 37.0))
+    # Hills grow away from the floor, so the valley keeps a floor.
+    y = road_y(x) + sides + hills * smoothstep(0.0, 400.0, abs(d))
+    y = y + (road_y(x) - y) * (1.0 - smoothstep(ROAD_FLAT, ROAD_FLAT + ROAD_BLEND, abs(d)))
+    r = math.hypot(x - VILLAGE_AT[0], z - VILLAGE_AT[1])
+    return y + (village_y() - y) * (1.0 - smoothstep(VILLAGE_FLAT, VILLAGE_FLAT + VILLAGE_BLEND, r))
+
+
+def village_y():
+    return road_y(VILLAGE_AT[0])
+
+
+def grey(y):
+    lo, hi = VALLEY_HEIGHT
+    return min(max(int(round((y - lo) / (hi - lo) * 65535.0)), 0), 65535)
+
+
+def valley_samples():
+    """Row j at z = -extent/2 + j·step (row 0 at minimum z), column i likewise in x."""
+    n, step = VALLEY_SAMPLES, VALLEY_EXTENT / (VALLEY_SAMPLES - 1)
+    half = 0.5 * VALLEY_EXTENT
+    return [[grey(valley_y(-half + i * step, -half + j * step)) for i in range(n)]
+            for j in range(n)]
+
+
+def sample_height(samples, x, z):
+    """The terrain mesh's height at (x, z): the loader's triangles, (i, j) →
+    (i, j + 1) → (i + 1, j) and (i + 1, j) → (i, j + 1) → (i + 1, j + 1)."""
+    lo, hi = VALLEY_HEIGHT
+    step, half = VALLEY_EXTENT / (VALLEY_SAMPLES - 1), 0.5 * VALLEY_EXTENT
+    u, v = (x + half) / step, (z + half) / step
+    i, j = min(int(u), VALLEY_SAMPLES - 2), min(int(v), VALLEY_SAMPLES - 2)
+    fu, fv = u - i, v - j
+    h = [[lo + (hi - lo) * samples[j + b][i + a] / 65535.0 for a in (0, 1)] for b in (0, 1)]
+    if fu + fv <= 1.0:
+        return h[0][0] + fu * (h[0][1] - h[0][0]) + fv * (h[1][0] - h[0][0])
+    return h[1][1] + (1.0 - fu) * (h[1][0] - h[1][1]) + (1.0 - fv) * (h[0][1] - h[1][1])
+
+
+def png16(rows):
+    """A 16-bit grey PNG of the rows (standard library only; deterministic:
+    filter Up on every row, zlib level 9)."""
+    width, height = len(rows[0]), len(rows)
+    raw = bytearray()
+    prev = bytes(2 * width)
+    for row in rows:
+        line = struct.pack(">%dH" % width, *row)
+        raw.append(2)  # Up: smooth hills leave small differences that deflate well
+        raw += bytes((line[k] - prev[k]) & 0xFF for k in range(len(line)))
+        prev = line
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    header = struct.pack(">IIBBBBB", width, height, 16, 0, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) +
+            chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b""))
+
+
+def lcg(seed):
+    """Deterministic uniform numbers in [0, 1) (no dependence on Python's random)."""
+    state = seed
+    while True:
+        state = (state * 6364136223846793005 + 1442695040888963407) % (1 << 64)
+        yield (state >> 11) / float(1 << 53)
+
+
+def valley():
+    samples = valley_samples()
+    g = Gltf()
+    box = g.geometry(unit_box())
+    tree = g.geometry(cone())
+    left = g.geometry(roof_slab(-EAVE, 0.0, -2.4, 2.4, lambda x: RIDGE_Y + ROOF_SLOPE * x, ROOF_T))
+    right = g.geometry(roof_slab(0.0, EAVE, -2.4, 2.4, lambda x: RIDGE_Y - ROOF_SLOPE * x, ROOF_T))
+    m_wall = g.material("brick", (0.55, 0.25, 0.2))
+    m_roof = g.material("slate", (0.3, 0.3, 0.35))
+    m_garage = g.material("plaster", (0.62, 0.6, 0.55))
+    m_pine = g.material("pine", (0.12, 0.3, 0.16))
+    m_road = g.material("road", (0.2, 0.2, 0.22))
+    walls_mesh = g.mesh("walls", box, m_wall)
+    roof_w_mesh = g.mesh("roof west", left, m_roof)
+    roof_e_mesh = g.mesh("roof east", right, m_roof)
+    garage_mesh = g.mesh("garage", box, m_garage)
+    tree_mesh = g.mesh("tree", tree, m_pine)
+    ground_y = village_y()
+    lo_q = VALLEY_HEIGHT[0] + (VALLEY_HEIGHT[1] - VALLEY_HEIGHT[0]) * grey(ground_y) / 65535.0
+    base = round(lo_q, 6)  # the terrace's height as the mesh has it
+
+    # The village: the village scene's house (walls, two roof sides) and
+    # garage, in two rows either side of a lane parallel to the road.
+    roots = []
+    vx, vz = VILLAGE_AT
+    for k, (dx, dz) in enumerate(((-40, -22), (-20, -22), (0, -22), (20, -22), (40, -22),
+                                  (-30, 22), (-10, 22), (10, 22), (30, 22))):
+        walls = g.node("house %d walls" % k, walls_mesh, translation=[0.0, 1.5, 0.0],
+                       scale=[5.0, 3.0, 4.0], snow={"collider": "box"})
+        roof_w = g.node("house %d roof west" % k, roof_w_mesh, snow={"collider": "mesh"})
+        roof_e = g.node("house %d roof east" % k, roof_e_mesh, snow={"collider": "mesh"})
+        roots.append(g.node("house %d" % k, translation=[vx + dx, base, vz + dz],
+                            children=[walls, roof_w, roof_e]))
+    for k, (dx, dz) in enumerate(((-50, 8), (50, 8), (0, 36))):
+        roots.append(g.node("garage %d" % k, garage_mesh,
+                            translation=[vx + dx, base + 1.25, vz + dz], scale=[4.0, 2.5, 3.0],
+                            snow={"collider": "box"}))
+
+    # The road: a dark strip 8 m wide, drawn 0.2 m over the levelled band.
+    half = 0.5 * VALLEY_EXTENT
+    xs = [-half + 10.0 * k for k in range(int(VALLEY_EXTENT / 10.0) + 1)]
+    positions, normals, indices = [], [], []
+    for k, x in enumerate(xs):
+        z = road_z(x)
+        y = sample_height(samples, x, z) + 0.2
+        positions += [[round(x, 4), round(y, 4), round(z - 4.0, 4)],
+                      [round(x, 4), round(y, 4), round(z + 4.0, 4)]]
+        normals += [[0.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+        if k:
+            a = 2 * k - 2
+            indices += [a, a + 1, a + 2, a + 2, a + 1, a + 3]
+    roots.append(g.node("road", g.mesh("road", g.geometry((positions, normals, indices)),
+                                       m_road)))
+
+    # The forest: pines on the slopes, off the road and the terrace; those in
+    # the snowing region are colliders, the rest only drawn.
+    rnd = lcg(31)
+    trees = 0
+    while trees < 300:
+        x = (next(rnd) - 0.5) * 2400.0
+        z = (next(rnd) - 0.5) * 2400.0
+        h = 8.0 + 8.0 * next(rnd)
+        if abs(z - road_z(x)) < ROAD_FLAT + ROAD_BLEND + 10.0:
+            continue
+        if math.hypot(x - vx, z - vz) < VILLAGE_FLAT + 5.0:
+            continue
+        y = round(sample_height(samples, x, z) - 0.5, 4)  # rooted below the slope
+        snow = {"collider": "mesh"} if max(abs(x - vx), abs(z - vz)) < SNOW_HALF + 20.0 else None
+        roots.append(g.node("tree %d" % trees, tree_mesh, translation=[round(x, 3), y, round(z, 3)],
+                            scale=[round(0.3 * h, 4), round(h, 4), round(0.3 * h, 4)], snow=snow))
+        trees += 1
+
+    top = base + 25.0
+    snow = {
+        "simulation": {"dt": DT, "seed": 7, "max_flakes": 100000, "integrator": "euler",
+                       "threads": 1,
+                       "bounds": {"min": [vx - SNOW_HALF, base - 40.0, vz - SNOW_HALF],
+                                  "max": [vx + SNOW_HALF, top, vz + SNOW_HALF]}},
+        # Light snow (1 kg/m²/h) of flakes up to 1 cm: over 120 × 120 m that
+        # takes about 3000 parcels a second to keep each under 5 g.
+        "emitter": dict(EMITTER, rate=3000.0, snowfall_kg_m2_h=1.0, size_max=0.01),
+        "wind": {"base": [1.5, 0.0, 0.4], "walk": 0.2, "max_deviation": 0.6},
+        "fog": {"mode": "exponential", "color": [0.75, 0.78, 0.82], "density": 0.0006},
+        "occlusion": {"resolution": 512, "tilt": 0.0},
+        "cover": {"min": [vx - SNOW_HALF, vz - SNOW_HALF], "max": [vx + SNOW_HALF, vz + SNOW_HALF],
+                  "cell": 0.25},
+        "camera": {"position": [vx - 260.0, base + 110.0, vz + 330.0],
+                   "target": [vx, base + 5.0, vz], "fov_y_deg": 50.0,
+                   "near_plane": 0.5, "far_plane": 6000.0},
+        "environment": ENVIRONMENT,
+        "world": {"heightmap": "valley_height.png", "extent": [VALLEY_EXTENT, VALLEY_EXTENT],
+                  "height": list(VALLEY_HEIGHT)},
+    }
+    return g.document("valley", roots, snow), png16(samples)
+
+
 def render(value, depth=0):
     """JSON with objects one key per line and arrays of plain values on one line."""
     pad, inner = " " * depth, " " * (depth + 1)
@@ -457,18 +661,20 @@ def render(value, depth=0):
 
 def main(argv):
     check = "--check" in argv[1:]
+    valley_doc, valley_png = valley()
     scenes = {"village.gltf": village(False), "village_effects.gltf": village(True),
-              "minimal.gltf": minimal(), "park.gltf": park()}
+              "minimal.gltf": minimal(), "park.gltf": park(), "valley.gltf": valley_doc}
+    files = {name: (render(doc) + "\n").encode("ascii") for name, doc in scenes.items()}
+    files["valley_height.png"] = valley_png
     OUT_DIR.mkdir(parents=True, exist_ok=True)
     stale = []
-    for name, doc in scenes.items():
+    for name, data in files.items():
         path = OUT_DIR / name
-        text = render(doc) + "\n"
-        if path.exists() and path.read_text(encoding="ascii") == text:
+        if path.exists() and path.read_bytes() == data:
             continue
         stale.append(name)
         if not check:
-            path.write_text(text, encoding="ascii")
+            path.write_bytes(data)
     if check and stale:
         print("make_assets: out of date: " + ", ".join(stale), file=sys.stderr)
         return 1

@@ -351,4 +351,25 @@ void load_buffers(GltfDocument& doc, const BufferSources& sources,
     }
 }
 
+std::vector<unsigned char> read_scene_file(const std::string& folder, const std::string& uri,
+                                           const std::string& field) {
+    if (folder.empty()) {
+        scene_fail(field,
+                   "names a file ('" + uri + "'), which a scene loaded from memory may not read");
+    }
+    std::error_code ec;
+    const fs::path root = fs::weakly_canonical(folder, ec);
+    if (ec) {
+        throw SceneError("cannot resolve the scene's folder '" + folder + "'");
+    }
+    const fs::path file = fenced_file(root, uri, field);
+    const std::uint64_t size = file_size(file, uri, field);
+    if (size > max_scene_buffer_bytes) {
+        scene_fail(field, "names '" + uri + "', which has " + std::to_string(size) +
+                              " bytes, more than the " + std::to_string(max_scene_buffer_bytes) +
+                              " a file may have");
+    }
+    return file_bytes(file, uri, size, field);
+}
+
 } // namespace snow

@@ -33,4 +33,11 @@ struct BufferSources {
 void load_buffers(GltfDocument& doc, const BufferSources& sources,
                   std::vector<std::string>& warnings);
 
+/// The bytes of the file `uri` names (a relative path, fenced to the scene's
+/// `folder` like a buffer's URI; at most max_scene_buffer_bytes). A scene
+/// loaded from memory (empty `folder`) reads no file. Throws SceneError
+/// naming `field`.
+[[nodiscard]] std::vector<unsigned char>
+read_scene_file(const std::string& folder, const std::string& uri, const std::string& field);
+
 } // namespace snow

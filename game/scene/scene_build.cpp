@@ -102,8 +102,12 @@ void tally_effects(const SceneSnow& s, const SceneDescription& d, const SimConfi
     }
 }
 
-Aabb default_bounds(const SceneGeometry& g, const Aabb& fallback) {
-    const std::optional<Aabb> b = mesh_bounds(g);
+Aabb default_bounds(const SceneDescription& d, const Aabb& fallback) {
+    std::optional<Aabb> b = mesh_bounds(d.geometry);
+    if (d.settings.world) { // the terrain is one of the meshes
+        const Aabb t = terrain_bounds(*d.settings.world);
+        b = b ? Aabb{glm::min(b->min, t.min), glm::max(b->max, t.max)} : t;
+    }
     if (!b) {
         return fallback;
     }
@@ -114,7 +118,7 @@ Aabb default_bounds(const SceneGeometry& g, const Aabb& fallback) {
 SimConfig config_for(const SceneDescription& d, const SceneOverrides& o) {
     SimConfig c = d.settings.config;
     if (!d.settings.has_bounds) {
-        c.bounds = default_bounds(d.geometry, c.bounds);
+        c.bounds = default_bounds(d, c.bounds);
     }
     if (o.seed) {
         c.seed = *o.seed;
@@ -183,6 +187,23 @@ BodyId add_body(Simulation& sim, const WorldNode& node, const NodeSnow& role) {
         d.motion = *role.motion;
     }
     return sim.add_body(d);
+}
+
+/// Colour of the bare terrain: grey-brown ground, not snow.
+constexpr glm::vec3 terrain_color{0.36f, 0.34f, 0.30f};
+
+/// The terrain of `d.settings.world`: one mesh collider and one drawn mesh, "terrain".
+void add_terrain(Simulation& sim, const SceneDescription& d, SceneVisuals& visuals) {
+    TerrainMesh mesh = terrain_mesh(*d.settings.world, *d.heights);
+    through_facade(d.settings_path + ".world: ",
+                   [&] { return sim.add_mesh_collider(terrain_triangles(mesh)); });
+    MeshRenderable r;
+    r.name = "terrain";
+    r.positions = std::move(mesh.positions);
+    r.normals = std::move(mesh.normals);
+    r.indices = std::move(mesh.indices);
+    r.color = terrain_color;
+    visuals.meshes.push_back(std::move(r));
 }
 
 void add_renderables(SceneVisuals& visuals, const WorldNode& node) {
@@ -264,6 +285,11 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
             }
         }
     }
+    if (d.heights) {
+        work.add(collider_triangles_work,
+                 terrain_triangle_count(d.heights->width, d.heights->height),
+                 d.settings_path + ".world.heightmap");
+    }
     tally_effects(s, d, config, o, auto_field, work);
 
     auto sim = through_facade("simulation settings (after command-line overrides): ",
@@ -289,6 +315,10 @@ std::unique_ptr<Simulation> build_scene(const SceneDescription& d, const SceneOv
         if (const auto& light = d.lights[i]) {
             visuals.lights.push_back(PointLight{node.position, light->color, light->intensity});
         }
+    }
+
+    if (d.heights) {
+        add_terrain(*sim, d, visuals);
     }
 
     // Facade errors name the declaration, or auto snow for what it made.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "game/scene/scene_geometry.hpp"
+#include "game/scene/scene_image.hpp"
 #include "game/scene/scene_schema.hpp"
 #include <snow/scene.hpp>
 
@@ -28,6 +29,8 @@ struct SceneDescription {
     std::string settings_path; ///< "scenes[i].extras.snow", prefixes facade errors
     /// The `auto` field that asks for auto snow (scene or asset level); empty: none.
     std::string auto_snow_path;
+    /// The height map of `settings.world`, decoded (present iff it is).
+    std::optional<HeightSamples> heights;
 };
 
 /// The rectangle and base plane of a node's surface: the top of `bounds`; a

@@ -6,7 +6,9 @@
 // (never a partly built one).
 #include <snow/scene.hpp>
 
+#include "game/scene/scene_buffers.hpp"
 #include "game/scene/scene_build.hpp"
+#include "game/scene/scene_image.hpp"
 #include "game/scene/scene_parse.hpp"
 
 #include <cstdio>
@@ -47,7 +49,12 @@ SceneDescription describe(SceneGeometry geometry, const SceneSchema& schema) {
 void load_bytes(std::string_view bytes, const std::string& folder, bool must_be_glb,
                 const SceneOverrides& overrides, SceneLoadResult& result) {
     ParsedScene parsed = parse_scene(bytes, folder, must_be_glb, result.warnings);
-    const SceneDescription d = describe(std::move(parsed.geometry), parsed.schema);
+    SceneDescription d = describe(std::move(parsed.geometry), parsed.schema);
+    if (d.settings.world) { // only the scene used reads its height map
+        const std::string field = d.settings_path + ".world.heightmap";
+        d.heights =
+            decode_height_png(read_scene_file(folder, d.settings.world->heightmap, field), field);
+    }
     if (!d.geometry.scene_name.empty()) {
         result.name = d.geometry.scene_name;
     }

@@ -233,6 +233,8 @@ constexpr Field<SceneSnow> scene_snow_fields[] = {
      }},
     {"environment", &read_nested<&SceneSnow::environment, environment_fields, reject>},
     {"auto", &SceneSnow::auto_snow},
+    {"world", +[](const Json& j, const std::string& field,
+                  SceneSnow& s) { s.world = read_world(j, field); }},
 };
 
 /// `asset.extras.snow`: the file asks for auto snow whichever scene is used.

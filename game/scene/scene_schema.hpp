@@ -5,6 +5,7 @@
 #pragma once
 
 #include "game/scene/scene_fields.hpp"
+#include "game/scene/scene_terrain.hpp"
 #include "systems/api/simulation_internals.hpp"
 #include <snow/render.hpp>
 
@@ -50,6 +51,7 @@ struct SceneSnow {
     std::optional<Sun> sun;
     std::optional<CoverDef> cover;
     std::optional<CameraDef> camera; ///< absent: the default view, or one framing auto snow
+    std::optional<WorldDef> world;   ///< a terrain from a height map (docs/world.md)
     Environment environment;
     /// `auto`: snow on the plain scene (scene_auto_snow.hpp) for what it leaves undeclared.
     bool auto_snow = false;
