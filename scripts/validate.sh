@@ -45,8 +45,10 @@ seconds=$(( $(date +%s) - start ))
     echo "(the source's own range where it gives one, otherwise the band stated in"
     echo "the row). The table is where issue #30 stands. Not in band yet: the"
     echo "roof at 40°, which one friction and one adhesion cannot hold to the code's"
-    echo "gradual decline (docs/cover_and_bodies.md, roofs that slide). Not yet"
-    echo "probed: drifts behind a fence and round a cube (Tabler, Oikawa); convergence"
+    echo "gradual decline (docs/cover_and_bodies.md, roofs that slide), and the"
+    echo "drifts at a fence, whose lee drift stops at a quarter of Tabler's length"
+    echo "(docs/wind_field.md, porous fences). Not yet probed: the scour round a"
+    echo "cube (Oikawa); convergence"
     echo "rows cover the flux (cells, depth, tick, field cells), the fall speed (tick),"
     echo "the roof loads (cells) and the pile flanks (5 and 10 cm cells)."
     echo
