@@ -9,13 +9,7 @@
 namespace snow::validation {
 
 std::vector<Row> fence_drift_shape(const Plan& plan) {
-    FenceDrift run;
-    run.wind = 10.0f;
-    run.upwind = 30.0f;
-    run.downwind = 45.0f;
-    run.fast_forward = 1000.0f;
-    run.endless_fetch = true;
-    run.seconds = plan.quick ? 6.0f : 360.0f;
+    FenceDrift run = towards_equilibrium(plan.quick ? 6.0f : 360.0f);
     run.shape_at = {run.seconds};
     const DriftShape d = fence_drift(run).shapes.at(0);
     const std::string scene =

@@ -20,6 +20,17 @@ constexpr std::uint32_t field_every = 4; // ticks per field step
 
 } // namespace
 
+FenceDrift towards_equilibrium(float seconds) {
+    FenceDrift run;
+    run.wind = 10.0f;
+    run.upwind = 30.0f;
+    run.downwind = 45.0f;
+    run.fast_forward = 1000.0f;
+    run.endless_fetch = true;
+    run.seconds = seconds;
+    return run;
+}
+
 FenceDriftResult fence_drift(const FenceDrift& run) {
     SimConfig cfg;
     cfg.bounds = {{-run.upwind * fence_h, 0.0f, -0.5f},

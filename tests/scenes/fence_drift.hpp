@@ -54,6 +54,11 @@ struct FenceDriftResult {
     std::vector<DriftShape> shapes; ///< one per FenceDrift::shape_at
 };
 
+/// A run towards Tabler's drifts [Tab80]: 10 m/s over an endless fetch, the
+/// ground 30 H upwind to 45 H downwind, the drifting 1000 times as fast as
+/// the air (WindTransportDef::fast_forward), `seconds` long.
+[[nodiscard]] FenceDrift towards_equilibrium(float seconds);
+
 [[nodiscard]] FenceDriftResult fence_drift(const FenceDrift& run);
 
 } // namespace snow

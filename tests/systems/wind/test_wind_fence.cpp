@@ -52,15 +52,8 @@ TEST(WindFence, AirBleedsThroughAPorousFenceAndSlowsBehindIt) {
 }
 
 TEST(WindFence, ALeeDriftGrowsBehindAPorousFenceInAFastForward) {
-    // 10 m/s over an endless fetch, the drifting run 1000 times as fast as
-    // the air: 17 and 50 hours of drifting.
-    FenceDrift run;
-    run.wind = 10.0f;
-    run.upwind = 30.0f;
-    run.downwind = 45.0f;
-    run.fast_forward = 1000.0f;
-    run.endless_fetch = true;
-    run.seconds = 180.0f;
+    // 17 and 50 hours of drifting.
+    FenceDrift run = towards_equilibrium(180.0f);
     run.shape_at = {60.0f, 180.0f};
     const FenceDriftResult r = fence_drift(run);
     ASSERT_EQ(r.shapes.size(), 2u);
