@@ -67,6 +67,38 @@ TEST(WindGround, CellsAtOrBelowASlopedGroundAreSolid) {
     EXPECT_FALSE(solid_at(sim, -0.5f, 0.5f, 0.5f)); // off the ground: the floor is the floor
 }
 
+TEST(WindGround, ADriftRaisesTheGroundTheAirFlowsOver) {
+    // 1 m cells up over a flat ground at y = 1; 1.6 m of snow on its cells
+    // under x in [2, 4): their columns fill up to the snow top (2.6, rounded
+    // to the face at 3) before the next step, the others stay at 1.
+    SimConfig cfg;
+    cfg.bounds = {{-8.0f, 0.0f, -4.0f}, {8.0f, 8.0f, 4.0f}};
+    Simulation sim(cfg);
+    test::blow_steadily_through_field(sim, 2.0f, {16, 8, 8, 1});
+    const SurfaceId id =
+        sim.add_surface(test::rect_surface(-8.0f, -4.0f, 16.0f, 8.0f, 1.0f, false));
+    sim.tick();
+    EXPECT_FALSE(solid_at(sim, 2.5f, 1.5f, 0.5f));
+    const SnowSurface& s = snow_surface(sim, id);
+    const auto units = static_cast<std::uint32_t>(std::lround(1.6 / s.unit_height));
+    for (std::uint32_t iz = 0; iz < s.nz; ++iz) {
+        for (std::uint32_t ix = 0; ix < s.nx; ++ix) {
+            const float x = s.x0 + (static_cast<float>(ix) + 0.5f) * s.cell;
+            if (x >= 2.0f && x < 4.0f) {
+                sim.add_settled_snow(id, ix, iz, units);
+            }
+        }
+    }
+    sim.tick();
+    for (const float x : {2.5f, 3.5f}) {
+        EXPECT_TRUE(solid_at(sim, x, 1.5f, 0.5f)) << x;
+        EXPECT_TRUE(solid_at(sim, x, 2.5f, 0.5f)) << x;
+        EXPECT_FALSE(solid_at(sim, x, 3.5f, 0.5f)) << x;
+    }
+    EXPECT_FALSE(solid_at(sim, 1.5f, 1.5f, 0.5f)) << "bare ground beside it";
+    EXPECT_TRUE(sim.mass().balanced());
+}
+
 TEST(WindGround, OpenGroundAboveTheFloorKeepsTheFreeStreamDownToItsTop) {
     // The ground is a wall the air slides along, as the floor is: read just
     // above it, the wind is the free stream (no slowdown without a law).
