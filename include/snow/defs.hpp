@@ -134,6 +134,11 @@ struct WindTransportDef {
     /// while its flow stays the same (MORFAC, docs/references.md [Roe06]). 1:
     /// real time; a fast-forward to a drift's equilibrium takes more.
     float fast_forward = 1.0f;
+    /// Length (m) over which the flux closes the gap to what the wind can
+    /// move, e-fold: it builds up along a fetch and drops its surplus over
+    /// this length where the air slows. Blowing snow reaches 90% of its
+    /// saturated rate over 30–60 m of fetch (docs/references.md [Kob72]).
+    float adjustment_length = 20.0f;
 };
 
 /// Settings to create a surface; see make_surface().

@@ -15,7 +15,7 @@ namespace snow {
 
 inline constexpr std::array<char, 8> snapshot_magic{'S', 'N', 'O', 'W', 'S', 'N', 'A', 'P'};
 /// 3: a wind field's settings say whether it is a tunnel, its transport's
-/// how fast it runs forward. 2: the
+/// how fast it runs forward and over what length its flux adjusts. 2: the
 /// transport's settings are its roughness and read height (the saltation
 /// flux); format 1 held a threshold speed, a rate and a fraction.
 inline constexpr std::uint32_t snapshot_format = 3;

@@ -58,6 +58,7 @@ inline constexpr double max_body_speed = 1000.0; ///< m/s along a scripted path
 // -- wind transport --
 inline constexpr double max_transport_roughness = 1.0;      ///< z0 (m)
 inline constexpr double max_transport_fast_forward = 1.0e5; ///< seconds of drifting a second
+inline constexpr double max_transport_adjustment_length = 1000.0; ///< m
 inline constexpr double max_transport_height = 100.0;       ///< m above the snow
 
 // -- the occlusion camera --

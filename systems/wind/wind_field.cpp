@@ -83,7 +83,7 @@ void field_state_record(Io& io, Field& f, bool& transport) {
 
 template <typename Io, typename Transport>
 void transport_record(Io& io, Transport& t) {
-    for (auto* v : {&t.roughness, &t.height}) {
+    for (auto* v : {&t.roughness, &t.height, &t.fast_forward, &t.adjustment_length}) {
         io(*v);
     }
 }
@@ -97,7 +97,6 @@ void save_state(ByteWriter& out, const WindField& f) {
     field_state_record(out, f, transport);
     if (transport) {
         transport_record(out, *f.transport);
-        out(f.transport->fast_forward);
     }
 }
 
@@ -119,7 +118,6 @@ void load_state(ByteReader& in, WindField& f) {
     f.transport.reset();
     if (transport) {
         transport_record(in, f.transport.emplace());
-        in(f.transport->fast_forward);
     }
     pack_centre(f);
 }
@@ -149,9 +147,6 @@ void hash_state(StateHasher& h, const WindField& f) {
     out(f.steps);
     if (f.transport) {
         transport_record(out, *f.transport);
-        if (f.transport->fast_forward != 1.0f) { // real time hashes as before fast-forwards
-            out(f.transport->fast_forward);
-        }
     }
 }
 

@@ -18,6 +18,8 @@ inline constexpr FieldRule<WindTransportDef> wind_transport_fields[] = {
     {"roughness", &WindTransportDef::roughness, positive_up_to(max_transport_roughness)},
     {"height", &WindTransportDef::height, positive_up_to(max_transport_height)},
     {"fast_forward", &WindTransportDef::fast_forward, between(1, max_transport_fast_forward)},
+    {"adjustment_length", &WindTransportDef::adjustment_length,
+     positive_up_to(max_transport_adjustment_length)},
 };
 
 [[nodiscard]] Invalid validate(const WindTransportDef& t);

@@ -2,23 +2,24 @@
 // field steps, the field's wind read `height` above each cell's snow top
 // gives a friction velocity by the log law and, where it passes the
 // threshold of the cell's snow (by its density), a saltation flux per metre
-// of width [PG90] (saltation.hpp). The flux crosses the cell's downwind x
-// and z faces: it carries what arrives from upwind and takes up snow of the
-// cell while it has any, up to what the wind can carry; where the air slows
-// (or turns) the surplus is laid down. So erosion and deposition follow the
-// flux's divergence, the flux over a snow field is the same at any cell size
-// or depth, and it crosses the surface's end (an eave, a drop, a void
-// column) as clumps that fly on with the air [WF §6 names this as missing:
-// "a strong wind cannot blow snow off of an object"].
+// of width [PG90] (saltation.hpp): what the wind can move. The flux crosses
+// the cell's downwind x and z faces: it carries what arrives from upwind and
+// closes a share 1 − e^(−cell/L) of its gap to what the wind can move, L the
+// adjustment length [Kob72]: it takes up snow of the cell where it falls
+// short, and lays its surplus down where the air slows (or turns). So
+// erosion and deposition follow the flux's divergence, the flux is the same
+// at any cell size or depth (the shares compose to the same exponential),
+// and it crosses the surface's end (an eave, a drop, a void column) as
+// clumps that fly on with the air [WF §6 names this as missing: "a strong
+// wind cannot blow snow off of an object"].
 //
-// The flux is quasi-steady (saltation reaches its carrying capacity within
-// metres, [PG90]): each field step sweeps every row along x, upwind cells
-// first, then every column along z (the order of the axes alternates from
-// step to step), in whole units; a face's share of a unit is rounded up or
-// down by a counter-based draw, so rounding neither loses nor favours small
-// cells. Units only move, the ledger total holds. The field is read once a
-// step at each tile corner and blended to the cells; tiles whose corners all
-// see less than half the wind that moves fresh snow are calm, and only tiles
+// Each field step sweeps every row along x, upwind cells first, then every
+// column along z (the order of the axes alternates from step to step), in
+// whole units; a face's share of a unit is rounded up or down by a
+// counter-based draw, so rounding neither loses nor favours small cells.
+// Units only move, the ledger total holds. The field is read once a step at
+// each tile corner and blended to the cells; tiles whose corners all see
+// less than half the wind that moves fresh snow are calm, and only tiles
 // under field columns where the air anywhere reaches that speed are read at
 // all: the cost follows the windy area, not the surface's size.
 #include "ecs/rng.hpp"
@@ -76,6 +77,9 @@ struct Step {
     /// Levels a unit the wind lays down is packed by: 1 − fresh / wind-packed density.
     double wind_packing = 0.0;
     RngKey key; ///< slot: the sweep line (draw_for); draw: surface, rounding, axis, direction
+    /// Share of the gap between the flux and what the wind can move that one
+    /// cell closes: 1 − e^(−cell / adjustment length).
+    double adjust = 1.0;
     std::uint32_t draw = 0; ///< this surface's first draw index
     float k_over_m = 1.0f;  ///< drag of clumps
 };
@@ -162,6 +166,14 @@ float draw_for(const Step& st, std::uint32_t ix, std::uint32_t iz, bool along_x,
     RngKey key = st.key;
     key.slot = along_x ? iz : ix;
     return rng_uniform(key, st.draw + 4 * what + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
+}
+
+/// The draw that rounds cell i's step towards what the wind can move: one
+/// per cell, so the flux along a line adjusts by the expected share.
+float adjust_draw(const Step& st, std::size_t i, bool along_x, int dir) {
+    RngKey key = st.key;
+    key.slot = static_cast<std::uint32_t>(i);
+    return rng_uniform(key, st.draw + 8 + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
 }
 
 /// `share` rounded down, or up with the probability of its fraction.
@@ -261,15 +273,27 @@ std::uint32_t pass_cell(SnowSurface& s, const Step& st, const TransportScratch& 
     std::uint32_t out = 0;
     if (next < wall || (next == off_surface && s.spills)) {
         const FaceUnits can = face_units(s, st, scratch, ix, iz, dx != 0, dx + dz);
-        const std::uint32_t taken = std::min(can.take - std::min(can.take, carry), s.snow[i]);
+        // The flux closes its gap to what the wind can move by a share per
+        // cell: it takes up the cell's snow where it is short, lays snow
+        // down where it carries more.
+        const auto step = [&](std::uint32_t gap) {
+            return whole_units(static_cast<double>(gap) * st.adjust,
+                               adjust_draw(st, i, dx != 0, dx + dz));
+        };
+        const std::uint32_t taken =
+            carry < can.take && s.snow[i] > 0 ? std::min(step(can.take - carry), s.snow[i]) : 0;
         if (taken != 0) {
             s.snow[i] -= taken;
             s.fit_compaction(i);
             s.mark_dirty(i);
         }
         // What the wind cannot carry on is laid here; what does not fit goes on.
-        const std::uint32_t through = std::min(carry, can.carry);
-        out = through + taken + lay(s, st, ix, iz, dx, dz, carry - through);
+        // Where the wind moves nothing (below the threshold, or turned away)
+        // the grains stop within their hops: all are laid. The sweeps rely
+        // on it: the cell past the windy tiles passes nothing on.
+        const std::uint32_t dropped =
+            can.carry == 0 ? carry : (carry > can.carry ? step(carry - can.carry) : 0);
+        out = carry - dropped + taken + lay(s, st, ix, iz, dx, dz, dropped);
     } else {
         // Against a wall or a closed end: only a full cell lets units on.
         out = lay(s, st, ix, iz, dx, dz, carry);
@@ -473,7 +497,9 @@ void wind_transport_system(World& w) {
     const bool x_first = f.steps % 2 == 0;
     w.each<SnowSurface>([&](Entity e, SnowSurface& s) {
         st.units_per_flux = static_cast<double>(s.cell) * seconds / unit_kg;
-        st.draw = 8 * e.index();
+        st.draw = 16 * e.index();
+        st.adjust = -std::expm1(-static_cast<double>(s.cell) /
+                                static_cast<double>(st.def->adjustment_length));
         const WindyBox b = windy_tiles(s, f, st, calm, scratch);
         if (b.x0 == b.x1) {
             return;

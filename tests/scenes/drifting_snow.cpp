@@ -19,7 +19,8 @@ DriftFlux drifting_snow(const DriftingSnow& run) {
         return static_cast<std::uint32_t>(std::lround(extent / run.field_cell));
     };
     test::blow_steadily_through_field(sim, run.wind, {across(12.0f), 4, across(4.0f), 4});
-    const WindTransportDef transport;
+    WindTransportDef transport;
+    transport.adjustment_length = run.adjustment_length;
     sim.set_wind_transport(transport);
     SurfaceDef strip;
     strip.x0 = -5.0f;

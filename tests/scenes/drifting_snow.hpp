@@ -19,6 +19,9 @@ struct DriftingSnow {
     float dt = 1.0f / 60.0f;  ///< the tick (s)
     float field_cell = 0.25f; ///< the field's horizontal cell edge (m); 4 layers in y
     float seconds = 3.0f;     ///< how long the flux is measured
+    /// WindTransportDef::adjustment_length: short, so the flux across the
+    /// strip's middle is the saturated one [PG90] measured.
+    float adjustment_length = 0.1f;
 };
 
 /// What a run gives.

@@ -23,9 +23,10 @@ constexpr std::uint32_t field_every = 4; // ticks per field step
 FenceDrift towards_equilibrium(float seconds) {
     FenceDrift run;
     run.wind = 10.0f;
-    run.upwind = 30.0f;
+    run.upwind = 100.0f;
+    run.fetch = 70.0f; // the flux saturates along it [Kob72]
     run.downwind = 45.0f;
-    run.fast_forward = 1000.0f;
+    run.fast_forward = 5000.0f;
     run.endless_fetch = true;
     run.seconds = seconds;
     return run;
@@ -62,7 +63,8 @@ FenceDriftResult fence_drift(const FenceDrift& run) {
     const auto column = [&](float x) {
         return static_cast<std::uint32_t>(std::floor((x - ground.x0) / cell));
     };
-    const float fetch_from = (1.0f - run.upwind) * fence_h, fetch_to = fetch_from + 9.0f * fence_h;
+    const float fetch_from = (1.0f - run.upwind) * fence_h,
+                fetch_to = fetch_from + run.fetch * fence_h;
     const auto fresh_units = static_cast<std::uint32_t>(std::lround(0.1 / s.unit_height));
     std::int64_t topped_up = 0;
     // Fills the fetch's cells up to the fresh depth.

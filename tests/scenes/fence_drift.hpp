@@ -21,6 +21,7 @@ struct FenceDrift {
     float seconds = 60.0f;     ///< how long the snow blows, after the air settles
     float upwind = 16.0f;      ///< H
     float downwind = 24.0f;    ///< H
+    float fetch = 9.0f;        ///< H of snow, from `upwind` − 1 H downwind
     float fast_forward = 1.0f; ///< WindTransportDef::fast_forward
     /// The fetch is topped up to its depth before every field step, as a
     /// long snow field upwind would feed the wind: the run can reach an
@@ -54,9 +55,9 @@ struct FenceDriftResult {
     std::vector<DriftShape> shapes; ///< one per FenceDrift::shape_at
 };
 
-/// A run towards Tabler's drifts [Tab80]: 10 m/s over an endless fetch, the
-/// ground 30 H upwind to 45 H downwind, the drifting 1000 times as fast as
-/// the air (WindTransportDef::fast_forward), `seconds` long.
+/// A run towards Tabler's drifts [Tab80]: 10 m/s over an endless fetch 70 H
+/// long, the ground 100 H upwind to 45 H downwind, the drifting 5000 times
+/// as fast as the air (WindTransportDef::fast_forward), `seconds` long.
 [[nodiscard]] FenceDrift towards_equilibrium(float seconds);
 
 [[nodiscard]] FenceDriftResult fence_drift(const FenceDrift& run);
