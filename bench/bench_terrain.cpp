@@ -63,24 +63,20 @@ void terrain_collider(benchmark::State& state) {
     }
 }
 
+/// Height maps of 257², 513² and 1025² samples, in wall-clock ms.
+void sample_counts(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"samples"})
+        ->Arg(257)
+        ->Arg(513)
+        ->Arg(1025)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+}
+
 } // namespace
 
-BENCHMARK(terrain_mesh_build)
-    ->Name("BM_TerrainMesh")
-    ->ArgNames({"samples"})
-    ->Arg(257)
-    ->Arg(513)
-    ->Arg(1025)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK(terrain_collider)
-    ->Name("BM_TerrainCollider")
-    ->ArgNames({"samples"})
-    ->Arg(257)
-    ->Arg(513)
-    ->Arg(1025)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(terrain_mesh_build)->Name("BM_TerrainMesh")->Apply(sample_counts);
+BENCHMARK(terrain_collider)->Name("BM_TerrainCollider")->Apply(sample_counts);
 
 } // namespace snow::bench
 

@@ -238,16 +238,26 @@ ENVIRONMENT = {"ambient": [0.18, 0.2, 0.24], "sky": [0.55, 0.62, 0.7]}
 RIDGE_Y, ROOF_SLOPE, EAVE, ROOF_T = 4.6, 0.58, 2.9, 0.15
 
 
+def house_roofs(g):
+    """The house's two roof slabs (west, east), as geometries of g."""
+    west = g.geometry(roof_slab(-EAVE, 0.0, -2.4, 2.4, lambda x: RIDGE_Y + ROOF_SLOPE * x, ROOF_T))
+    east = g.geometry(roof_slab(0.0, EAVE, -2.4, 2.4, lambda x: RIDGE_Y - ROOF_SLOPE * x, ROOF_T))
+    return west, east
+
+
+def building_materials(g):
+    """Walls, roofs and garages: brick, slate, plaster."""
+    return (g.material("brick", (0.55, 0.25, 0.2)), g.material("slate", (0.3, 0.3, 0.35)),
+            g.material("plaster", (0.62, 0.6, 0.55)))
+
+
 def village(effects):
     g = Gltf()
     box = g.geometry(unit_box())
     sphere = g.geometry(unit_sphere())
-    left = g.geometry(roof_slab(-EAVE, 0.0, -2.4, 2.4, lambda x: RIDGE_Y + ROOF_SLOPE * x, ROOF_T))
-    right = g.geometry(roof_slab(0.0, EAVE, -2.4, 2.4, lambda x: RIDGE_Y - ROOF_SLOPE * x, ROOF_T))
+    left, right = house_roofs(g)
     m_ground = g.material("frozen ground", (0.42, 0.4, 0.36))
-    m_wall = g.material("brick", (0.55, 0.25, 0.2))
-    m_roof = g.material("slate", (0.3, 0.3, 0.35))
-    m_garage = g.material("plaster", (0.62, 0.6, 0.55))
+    m_wall, m_roof, m_garage = building_materials(g)
     m_wood = g.material("wood", (0.45, 0.32, 0.2))
     m_snowman = g.material("snowman", (0.95, 0.95, 0.97))
 
@@ -555,11 +565,8 @@ def valley():
     g = Gltf()
     box = g.geometry(unit_box())
     tree = g.geometry(cone())
-    left = g.geometry(roof_slab(-EAVE, 0.0, -2.4, 2.4, lambda x: RIDGE_Y + ROOF_SLOPE * x, ROOF_T))
-    right = g.geometry(roof_slab(0.0, EAVE, -2.4, 2.4, lambda x: RIDGE_Y - ROOF_SLOPE * x, ROOF_T))
-    m_wall = g.material("brick", (0.55, 0.25, 0.2))
-    m_roof = g.material("slate", (0.3, 0.3, 0.35))
-    m_garage = g.material("plaster", (0.62, 0.6, 0.55))
+    left, right = house_roofs(g)
+    m_wall, m_roof, m_garage = building_materials(g)
     m_pine = g.material("pine", (0.12, 0.3, 0.16))
     m_road = g.material("road", (0.2, 0.2, 0.22))
     walls_mesh = g.mesh("walls", box, m_wall)
