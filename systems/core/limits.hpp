@@ -56,10 +56,10 @@ inline constexpr double max_body_size = 100.0;   ///< radius, half extent or hal
 inline constexpr double max_body_speed = 1000.0; ///< m/s along a scripted path
 
 // -- wind transport --
-inline constexpr double max_transport_roughness = 1.0;      ///< z0 (m)
-inline constexpr double max_transport_fast_forward = 1.0e5; ///< seconds of drifting a second
+inline constexpr double max_transport_roughness = 1.0;            ///< z0 (m)
+inline constexpr double max_transport_fast_forward = 1.0e5;       ///< seconds of drifting a second
 inline constexpr double max_transport_adjustment_length = 1000.0; ///< m
-inline constexpr double max_transport_height = 100.0;       ///< m above the snow
+inline constexpr double max_transport_height = 100.0;             ///< m above the snow
 
 // -- the occlusion camera --
 inline constexpr std::uint32_t max_occlusion_resolution = 4096; ///< texels per side
