@@ -76,7 +76,8 @@ struct Step {
     double units_per_flux = 0.0;
     /// Levels a unit the wind lays down is packed by: 1 − fresh / wind-packed density.
     double wind_packing = 0.0;
-    RngKey key; ///< slot: the sweep line (draw_for); draw: surface, rounding, axis, direction
+    RngKey
+        key; ///< slot: a sweep line or a cell (draw_at); draw: surface, rounding, axis, direction
     /// Share of the gap between the flux and what the wind can move that one
     /// cell closes: 1 − e^(−cell / adjustment length).
     double adjust = 1.0;
@@ -156,6 +157,15 @@ glm::vec2 wind_over(const SnowSurface& s, const TransportScratch& scratch, std::
     return low + fz * (high - low);
 }
 
+/// One draw of this surface and step for `slot`: `what` 0 rounds a face's
+/// flux, 1 the packing of what it lays, 2 a cell's step towards what the wind
+/// can move; one per axis and direction (4 · 3 of the surface's 16 indices).
+float draw_at(const Step& st, std::uint32_t slot, bool along_x, int dir, std::uint32_t what) {
+    RngKey key = st.key;
+    key.slot = slot;
+    return rng_uniform(key, st.draw + 4 * what + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
+}
+
 /// The draw that rounds the shares of cell (ix, iz) for its face `dir` (±1)
 /// along x (`along_x`) or z; `what` 0: the flux across it, 1: the packing of
 /// what it lays. One draw per line of the sweep and step: in an even wind
@@ -163,17 +173,13 @@ glm::vec2 wind_over(const SnowSurface& s, const TransportScratch& scratch, std::
 /// never lays snow down or takes it up.
 float draw_for(const Step& st, std::uint32_t ix, std::uint32_t iz, bool along_x, int dir,
                std::uint32_t what) {
-    RngKey key = st.key;
-    key.slot = along_x ? iz : ix;
-    return rng_uniform(key, st.draw + 4 * what + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
+    return draw_at(st, along_x ? iz : ix, along_x, dir, what);
 }
 
 /// The draw that rounds cell i's step towards what the wind can move: one
 /// per cell, so the flux along a line adjusts by the expected share.
 float adjust_draw(const Step& st, std::size_t i, bool along_x, int dir) {
-    RngKey key = st.key;
-    key.slot = static_cast<std::uint32_t>(i);
-    return rng_uniform(key, st.draw + 8 + (along_x ? 0u : 2u) + (dir > 0 ? 1u : 0u));
+    return draw_at(st, static_cast<std::uint32_t>(i), along_x, dir, 2);
 }
 
 /// `share` rounded down, or up with the probability of its fraction.

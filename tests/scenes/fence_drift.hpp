@@ -4,17 +4,17 @@
 /// that lets air through the fence by its porosity [Wil85], in a 1 m slice
 /// of a long fence (the field is a tunnel: its sides are walls the air slides
 /// along). What the tests hold to: a porous fence slows the air in its lee,
-/// and the snow the wind carries drops on both sides of it; with no fence it
-/// passes (docs/wind_field.md "Porous fences").
+/// and over hours of drifting (fast-forwarded) grows drifts on both sides of
+/// it; with no fence the snow passes (docs/wind_field.md "Porous fences").
 #pragma once
 
 #include <vector>
 
 namespace snow {
 
-/// One run. The fence stands at x = 0 across the whole width; the fetch lies
-/// from `upwind` − 1 H to `upwind` − 10 H upwind; the ground reaches from
-/// `upwind` H upwind to `downwind` H downwind.
+/// One run. The fence stands at x = 0 across the whole width; the fetch,
+/// `fetch` H long, starts `upwind` − 1 H upwind of it; the ground reaches
+/// from `upwind` H upwind to `downwind` H downwind.
 struct FenceDrift {
     float porosity = 0.5f;     ///< the fence's open share; 1 = no fence
     float wind = 8.0f;         ///< the free wind along +x (m/s)
